@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: linear viscoelastic normal law (linear spring-dashpot, Cundall & Strack 1979).
+//
+//   F = k xi + gamma xi_dot
+//
+// Two end-of-contact conventions (physics_reference.md section 2.2.2):
+//   ContactEnd::zero_overlap  contact lasts until xi = 0; F may become attractive near the end.
+//                             e = exp(-pi beta / sqrt(1 - beta^2)), t_c = pi / omega.
+//   ContactEnd::zero_force    F is clipped at 0 (no attraction); the contact ends when
+//                             k xi + gamma xi_dot = 0.  t_c = 2 atan(omega/delta)/omega,
+//                             e = exp(-delta t_c), and the same form continues into the
+//                             over-damped range (t_c = 2 atanh(s/delta)/s, s^2 = delta^2 - omega0^2).
+// with omega0^2 = k/m*, delta = gamma/(2 m*), omega^2 = omega0^2 - delta^2, beta = delta/omega0.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "../kinematics.h"
+
+namespace tdem {
+
+enum class ContactEnd { zero_overlap, zero_force };
+
+inline const char* to_string(ContactEnd e) {
+  return e == ContactEnd::zero_overlap ? "zero_overlap" : "zero_force";
+}
+
+namespace lsd {
+
+template <class T>
+struct Coefficients {
+  T k;      // normal stiffness [N/m]
+  T gamma;  // normal damping coefficient [kg/s]
+};
+
+// Stiffness and damping per unit effective mass: k = m* k_per_mass, gamma = m* gamma_per_mass.
+// This is how (e, t_c) parameters act on pairs of different mass.
+template <class T>
+struct MassRates {
+  T k_per_mass;      // omega0^2 [1/s^2]
+  T gamma_per_mass;  // 2 delta  [1/s]
+  Coefficients<T> at(T meff) const { return {meff * k_per_mass, meff * gamma_per_mass}; }
+};
+
+// ---------------------------------------------------------------- the force kernel
+template <ContactEnd End, class T>
+inline NormalResult<T> force(const Coefficients<T>& c, const NormalKinematics<T>& kin) noexcept {
+  const T elastic = c.k * kin.overlap;
+  const T dissipative = c.gamma * kin.overlap_rate;
+  T f = dissipative + elastic;
+  if constexpr (End == ContactEnd::zero_force) {
+    if (f < T(0)) f = T(0);
+  }
+  return {f, elastic, c.k, c.gamma};
+}
+
+template <class T>
+inline NormalResult<T> force(ContactEnd end, const Coefficients<T>& c,
+                             const NormalKinematics<T>& kin) noexcept {
+  return end == ContactEnd::zero_force ? force<ContactEnd::zero_force>(c, kin)
+                                       : force<ContactEnd::zero_overlap>(c, kin);
+}
+
+// ---------------------------------------------------------------- closed forms
+// Dimensionless: time in units of 1/omega0, damping ratio beta = delta/omega0.
+
+// omega0 * t_c for damping ratio beta (infinite if the contact never ends).
+inline double scaled_contact_time(double beta, ContactEnd end) {
+  if (!(beta >= 0.0)) throw std::domain_error("damping ratio must be >= 0, got " + std::to_string(beta));
+  if (end == ContactEnd::zero_overlap) {
+    if (beta >= 1.0) return std::numeric_limits<double>::infinity();
+    return M_PI / std::sqrt(1.0 - beta * beta);
+  }
+  if (beta < 1.0) {
+    const double w = std::sqrt(1.0 - beta * beta);
+    return 2.0 * std::atan2(w, beta) / w;
+  }
+  if (beta == 1.0) return 2.0;
+  const double s = std::sqrt(beta * beta - 1.0);
+  return 2.0 * std::atanh(s / beta) / s;
+}
+
+// Coefficient of normal restitution for damping ratio beta.
+inline double restitution_from_damping_ratio(double beta, ContactEnd end) {
+  const double tau = scaled_contact_time(beta, end);
+  if (end == ContactEnd::zero_overlap) {
+    if (!std::isfinite(tau)) return 0.0;
+    return std::exp(-M_PI * beta / std::sqrt(1.0 - beta * beta));
+  }
+  return std::exp(-beta * tau);
+}
+
+inline void check_restitution(double e) {
+  if (!(e > 0.0 && e <= 1.0))
+    throw std::domain_error("coefficient of restitution " + std::to_string(e) +
+                            " is outside the allowed range (0, 1]");
+}
+
+// Damping ratio that gives restitution e. zero_overlap: closed form; zero_force: bisection
+// (e(beta) is monotone), valid for every e in (0, 1].
+inline double damping_ratio_from_restitution(double e, ContactEnd end) {
+  check_restitution(e);
+  if (e == 1.0) return 0.0;
+  const double le = std::log(e);
+  if (end == ContactEnd::zero_overlap) return -le / std::sqrt(le * le + M_PI * M_PI);
+  double lo = 0.0, hi = 1.0;
+  while (restitution_from_damping_ratio(hi, end) > e) {
+    lo = hi;
+    hi *= 2.0;
+    if (hi > 1e150) throw std::domain_error("restitution " + std::to_string(e) + " cannot be reached");
+  }
+  for (int it = 0; it < 200 && hi - lo > 1e-16 * hi; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (restitution_from_damping_ratio(mid, end) > e) lo = mid; else hi = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+inline void check_positive(const char* what, double v) {
+  if (!(v > 0.0) || !std::isfinite(v))
+    throw std::domain_error(std::string(what) + " " + std::to_string(v) + " must be > 0");
+}
+
+// From measured restitution and contact time, per unit effective mass.
+inline MassRates<double> rates_from_restitution_and_time(double e, double tc, ContactEnd end) {
+  check_positive("contact time", tc);
+  const double beta = damping_ratio_from_restitution(e, end);
+  const double omega0 = scaled_contact_time(beta, end) / tc;
+  return {omega0 * omega0, 2.0 * beta * omega0};
+}
+
+inline Coefficients<double> from_restitution_and_time(double e, double tc, double meff, ContactEnd end) {
+  check_positive("effective mass", meff);
+  return rates_from_restitution_and_time(e, tc, end).at(meff);
+}
+
+// From restitution and a chosen stiffness.
+inline Coefficients<double> from_restitution_and_stiffness(double e, double k, double meff, ContactEnd end) {
+  check_positive("stiffness", k);
+  check_positive("effective mass", meff);
+  const double beta = damping_ratio_from_restitution(e, end);
+  return {k, 2.0 * beta * std::sqrt(k * meff)};
+}
+
+inline double damping_ratio(const Coefficients<double>& c, double meff) {
+  check_positive("stiffness", c.k);
+  check_positive("effective mass", meff);
+  if (!(c.gamma >= 0.0)) throw std::domain_error("damping " + std::to_string(c.gamma) + " must be >= 0");
+  return c.gamma / (2.0 * std::sqrt(c.k * meff));
+}
+
+// Back: what a pair of effective mass meff does with these coefficients.
+inline double restitution(const Coefficients<double>& c, double meff, ContactEnd end) {
+  return restitution_from_damping_ratio(damping_ratio(c, meff), end);
+}
+
+inline double contact_time(const Coefficients<double>& c, double meff, ContactEnd end) {
+  return scaled_contact_time(damping_ratio(c, meff), end) / std::sqrt(c.k / meff);
+}
+
+// Largest overlap of a head-on impact at relative normal velocity v0 (closed form):
+// xi(t) = v0 e^{-delta t} sin(omega t)/omega, maximum where tan(omega t) = omega/delta.
+inline double max_overlap(const Coefficients<double>& c, double meff, double v0) {
+  const double beta = damping_ratio(c, meff);
+  const double w0 = std::sqrt(c.k / meff);
+  if (beta < 1.0) {
+    const double w = w0 * std::sqrt(1.0 - beta * beta), d = beta * w0;
+    const double t = std::atan2(w, d) / w;
+    return v0 * std::exp(-d * t) * std::sin(w * t) / w;
+  }
+  throw std::domain_error("max_overlap: only the under-damped case is implemented");
+}
+
+}  // namespace lsd
+}  // namespace tdem

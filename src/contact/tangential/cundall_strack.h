@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: Cundall-Strack tangential law: a linear tangential spring (elongation kept in the
+// contact history), an optional tangential dashpot, and a Coulomb limit mu |F_n|.
+//
+//   F_t = -(k_t s + gamma_t v_t)   while sticking,      |F_t| <= mu |F_n|
+//
+// Every step the spring elongation s is advanced by v_t dt and projected into the current
+// tangent plane (the normal component is removed). Two rules say what happens on sliding:
+//
+//   SlipRule::spring_cap          the Coulomb limit caps the spring force k_t|s|; while
+//                                 sliding the dashpot is off and the spring is truncated to
+//                                 s = -F_t/k_t (so |k_t s| = mu|F_n|). LIGGGHTS `tangential history`.
+//   SlipRule::spring_dashpot_cap  the limit caps the whole force |k_t s + gamma_t v_t|; the
+//                                 spring is set so that the spring-plus-dashpot force equals the
+//                                 capped force. LAMMPS `gran/hooke/history`. This truncation is
+//                                 applied even when the history is not advanced (set-up passes),
+//                                 as LAMMPS does.
+#pragma once
+
+#include <cmath>
+
+#include "../kinematics.h"
+
+namespace tdem {
+namespace cundall_strack {
+
+enum class SlipRule { spring_cap, spring_dashpot_cap };
+
+inline const char* to_string(SlipRule r) {
+  return r == SlipRule::spring_cap ? "spring" : "spring_dashpot";
+}
+
+template <class T>
+struct Params {
+  T kt;      // tangential stiffness [N/m]
+  T gammat;  // tangential damping coefficient of this contact [kg/s]
+  T mu;      // Coulomb friction coefficient
+};
+
+template <class T>
+struct Kinematics {
+  T d[3];     // normal direction, any length (unit normal, or the centre distance vector)
+  T d_scale;  // 1/|d|^2 (1 for a unit normal)
+  T vt[3];    // tangential velocity of the contact point of i relative to j
+  T dt;       // time step
+};
+
+// The spring elongation, a vector in the contact plane: flips sign with the pair order.
+inline constexpr HistorySlot history[] = {{"shear_x", true}, {"shear_y", true}, {"shear_z", true}};
+inline constexpr int history_size = 3;
+
+// fn: the normal force of this contact (from the normal law). update: advance the history
+// (false during set-up passes that must not change the state). Writes the tangential force
+// on particle i into ft.
+template <SlipRule Rule, class T>
+inline void force(const Params<T>& p, const Kinematics<T>& kin, T fn, bool update, T* shear,
+                  T* ft) noexcept {
+  if (update) {
+    shear[0] += kin.vt[0] * kin.dt;
+    shear[1] += kin.vt[1] * kin.dt;
+    shear[2] += kin.vt[2] * kin.dt;
+    T rsht = shear[0] * kin.d[0] + shear[1] * kin.d[1] + shear[2] * kin.d[2];
+    rsht *= kin.d_scale;
+    shear[0] -= rsht * kin.d[0];
+    shear[1] -= rsht * kin.d[1];
+    shear[2] -= rsht * kin.d[2];
+  }
+  const T shrmag = std::sqrt(shear[0] * shear[0] + shear[1] * shear[1] + shear[2] * shear[2]);
+  const T limit = p.mu * std::fabs(fn);
+
+  if constexpr (Rule == SlipRule::spring_cap) {
+    ft[0] = -(p.kt * shear[0]);
+    ft[1] = -(p.kt * shear[1]);
+    ft[2] = -(p.kt * shear[2]);
+    const T spring = p.kt * shrmag;
+    if (spring > limit) {
+      if (shrmag != T(0)) {
+        const T ratio = limit / spring;
+        ft[0] *= ratio;
+        ft[1] *= ratio;
+        ft[2] *= ratio;
+        if (update) {
+          shear[0] = -ft[0] / p.kt;
+          shear[1] = -ft[1] / p.kt;
+          shear[2] = -ft[2] / p.kt;
+        }
+      } else {
+        ft[0] = ft[1] = ft[2] = T(0);
+      }
+    } else {
+      ft[0] -= p.gammat * kin.vt[0];
+      ft[1] -= p.gammat * kin.vt[1];
+      ft[2] -= p.gammat * kin.vt[2];
+    }
+  } else {
+    ft[0] = -(p.kt * shear[0] + p.gammat * kin.vt[0]);
+    ft[1] = -(p.kt * shear[1] + p.gammat * kin.vt[1]);
+    ft[2] = -(p.kt * shear[2] + p.gammat * kin.vt[2]);
+    const T fs = std::sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
+    if (fs > limit) {
+      if (shrmag != T(0)) {
+        const T ratio = limit / fs;
+        for (int k = 0; k < 3; ++k) {
+          const T dash = p.gammat * kin.vt[k] / p.kt;
+          shear[k] = ratio * (shear[k] + dash) - dash;
+          ft[k] *= ratio;
+        }
+      } else {
+        ft[0] = ft[1] = ft[2] = T(0);
+      }
+    }
+  }
+}
+
+template <class T>
+inline void force(SlipRule rule, const Params<T>& p, const Kinematics<T>& kin, T fn, bool update,
+                  T* shear, T* ft) noexcept {
+  if (rule == SlipRule::spring_cap)
+    force<SlipRule::spring_cap>(p, kin, fn, update, shear, ft);
+  else
+    force<SlipRule::spring_dashpot_cap>(p, kin, fn, update, shear, ft);
+}
+
+}  // namespace cundall_strack
+}  // namespace tdem
