@@ -70,7 +70,7 @@ EOF
   orig="$(ls "$deps_dir"/download/lammps_*.orig.tar.* | head -n 1)"
   tmp="$deps_dir/unpack.$$"
   $SUDO rm -rf "$tmp" && $SUDO mkdir -p "$tmp"
-  $SUDO tar -C "$tmp" -xf "$orig" --wildcards \
+  $SUDO tar -C "$tmp" -xf "$orig" --wildcards --no-wildcards-match-slash \
     '*/src/*.h' '*/src/fmt/*' '*/src/GRANULAR/*' '*/src/PLUGIN/*' '*/src/main.cpp' \
     '*/bench/in.chute*' '*/bench/data.chute' '*/examples/pour/*' '*/examples/granregion/*' \
     '*/examples/granular/*'
