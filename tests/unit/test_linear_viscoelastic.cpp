@@ -161,6 +161,21 @@ TEST(LinearViscoelastic, KernelForceValues) {
   EXPECT_EQ(r.damping, 30.0);
 }
 
+TEST(LinearViscoelastic, StiffnessFromMaterialMatchesHertzOverlap) {
+  // The undamped linear contact reaches xi_max = v sqrt(m/k); Hertz reaches
+  // (5 m v^2 / (4 k_H))^(2/5), k_H = 4/3 E* sqrt(R*) (physics_reference 2.2.3).
+  for (double v : {0.1, 1.0, 7.0}) {
+    const double E = 7e7, R = 1.5e-3, m = 2e-4;
+    const double k = lsd::stiffness_matching_hertz(E, R, m, v);
+    const double kH = 4.0 / 3.0 * E * std::sqrt(R);
+    EXPECT_NEAR(v * std::sqrt(m / k), std::pow(5.0 * m * v * v / (4.0 * kH), 0.4), 1e-12) << v;
+    const double b = lsd::damping_ratio_from_restitution(0.6, ContactEnd::zero_overlap);
+    EXPECT_NEAR(lsd::damping_zero_overlap_from_log_restitution(std::log(0.6), k, m),
+                lsd::damping_from_ratio(b, k, m), 1e-12 * lsd::damping_from_ratio(b, k, m));
+    EXPECT_NEAR(lsd::restitution({k, lsd::damping_from_ratio(b, k, m)}, m, ContactEnd::zero_overlap), 0.6, 1e-12);
+  }
+}
+
 TEST(LinearViscoelastic, BadInputIsRejected) {
   for (double e : {0.0, -0.1, 1.01, double(NAN)}) {
     EXPECT_THROW(lsd::damping_ratio_from_restitution(e, ContactEnd::zero_force), std::domain_error) << e;

@@ -145,6 +145,31 @@ inline Coefficients<double> from_restitution_and_stiffness(double e, double k, d
   return {k, 2.0 * beta * std::sqrt(k * meff)};
 }
 
+// Stiffness from material data: the linear k whose undamped maximum overlap at the
+// characteristic impact velocity v_char equals Hertz's, xi_max = (5 m* v^2/(4 k_H))^(2/5) with
+// k_H = 4/3 E* sqrt(R*):  k = 16/15 sqrt(R*) E* (15 m* v^2 / (16 sqrt(R*) E*))^(1/5).
+// (This is the stiffness of LIGGGHTS `model hooke`; evaluated in the same order.)
+template <class T>
+inline T stiffness_matching_hertz(T e_eff, T r_eff, T meff, T v_char) noexcept {
+  const T sqrt_r = std::sqrt(r_eff);
+  return T(16.) / T(15.) * sqrt_r * e_eff *
+         std::pow(T(15.) * meff * v_char * v_char / (T(16.) * sqrt_r * e_eff), T(0.2));
+}
+
+// Per-contact damping for a stiffness that varies from contact to contact, given ln e
+// (zero_overlap convention): gamma = sqrt(4 m* k ln^2 e / (ln^2 e + pi^2)) = 2 beta sqrt(k m*).
+template <class T>
+inline T damping_zero_overlap_from_log_restitution(T log_e, T k, T meff) noexcept {
+  const T l2 = log_e * log_e;
+  return std::sqrt(T(4.) * meff * k * l2 / (l2 + T(M_PI) * T(M_PI)));
+}
+
+// Same for any convention, from the damping ratio beta (damping_ratio_from_restitution).
+template <class T>
+inline T damping_from_ratio(T beta, T k, T meff) noexcept {
+  return T(2.) * beta * std::sqrt(k * meff);
+}
+
 inline double damping_ratio(const Coefficients<double>& c, double meff) {
   check_positive("stiffness", c.k);
   check_positive("effective mass", meff);
