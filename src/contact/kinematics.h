@@ -9,6 +9,14 @@
 //  * reff is the effective radius, 1/R* = 1/R_i + 1/R_j (a plane wall has R_j -> infinity).
 #pragma once
 
+// Force kernels run billions of times inside the hosts' contact loops: make sure they are
+// inlined into the adapter even when the compiler's size heuristics would say no.
+#if defined(__GNUC__) || defined(__clang__)
+#define TDEM_KERNEL inline __attribute__((always_inline))
+#else
+#define TDEM_KERNEL inline
+#endif
+
 namespace tdem {
 
 template <class T>

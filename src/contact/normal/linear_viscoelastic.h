@@ -47,7 +47,7 @@ struct MassRates {
 
 // ---------------------------------------------------------------- the force kernel
 template <ContactEnd End, class T>
-inline NormalResult<T> force(const Coefficients<T>& c, const NormalKinematics<T>& kin) noexcept {
+TDEM_KERNEL NormalResult<T> force(const Coefficients<T>& c, const NormalKinematics<T>& kin) noexcept {
   const T elastic = c.k * kin.overlap;
   const T dissipative = c.gamma * kin.overlap_rate;
   T f = dissipative + elastic;

@@ -53,7 +53,7 @@ inline constexpr int history_size = 3;
 // (false during set-up passes that must not change the state). Writes the tangential force
 // on particle i into ft.
 template <SlipRule Rule, class T>
-inline void force(const Params<T>& p, const Kinematics<T>& kin, T fn, bool update, T* shear,
+TDEM_KERNEL void force(const Params<T>& p, const Kinematics<T>& kin, T fn, bool update, T* shear,
                   T* ft) noexcept {
   if (update) {
     shear[0] += kin.vt[0] * kin.dt;

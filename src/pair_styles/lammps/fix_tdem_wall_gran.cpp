@@ -1,0 +1,373 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: fix tdem/wall/gran (see fix_tdem_wall_gran.h and docs/lammps.md).
+
+#include "fix_tdem_wall_gran.h"
+
+#include "atom.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "respa.h"
+#include "update.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+using tdem_lammps::LawCoeffs;
+
+static constexpr double BIG = 1.0e20;
+
+namespace {
+double wall_number(LAMMPS *lmp, const std::string &where, const std::string &key, const char *s)
+{
+  char *end = nullptr;
+  errno = 0;
+  const double v = strtod(s, &end);
+  if (end == s || *end != '\0' || errno == ERANGE || !std::isfinite(v))
+    lmp->error->all(FLERR, where + ": " + key + " expects a finite number, got '" + s + "'");
+  return v;
+}
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), history_one(nullptr), fix_rigid(nullptr), mass_rigid(nullptr)
+{
+  const std::string where = std::string("fix ") + id + " tdem/wall/gran";
+  if (!atom->sphere_flag) error->all(FLERR, where + " requires atom_style sphere");
+
+  create_attribute = 1;
+  restart_peratom = 1;
+  size_history = tdem::cundall_strack::history_size;
+  nlevels_respa = 0;
+  dt = update->dt;
+
+  int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
+
+  // wall geometry
+  if (iarg >= narg)
+    error->all(FLERR, where + ": missing wall style; allowed: xplane lo hi, yplane lo hi, "
+                              "zplane lo hi, zcylinder radius");
+  const std::string ws = arg[iarg];
+  cylradius = 0.0;
+  lo = -BIG;
+  hi = BIG;
+  if (ws == "xplane" || ws == "yplane" || ws == "zplane") {
+    wallstyle = (ws == "xplane") ? XPLANE : (ws == "yplane") ? YPLANE : ZPLANE;
+    if (iarg + 3 > narg)
+      error->all(FLERR, where + ": wall style " + ws + " needs 2 values (lo hi, NULL = no wall), got " +
+                            std::to_string(narg - iarg - 1));
+    if (strcmp(arg[iarg + 1], "NULL") != 0) lo = wall_number(lmp, where, ws + " lo", arg[iarg + 1]);
+    if (strcmp(arg[iarg + 2], "NULL") != 0) hi = wall_number(lmp, where, ws + " hi", arg[iarg + 2]);
+    if (!(lo < hi))
+      error->all(FLERR, where + ": " + ws + " lo = " + arg[iarg + 1] + " must be below hi = " +
+                            arg[iarg + 2]);
+    iarg += 3;
+  } else if (ws == "zcylinder") {
+    wallstyle = ZCYLINDER;
+    if (iarg + 2 > narg) error->all(FLERR, where + ": wall style zcylinder needs 1 value (radius), got 0");
+    cylradius = wall_number(lmp, where, "zcylinder radius", arg[iarg + 1]);
+    if (!(cylradius > 0.0))
+      error->all(FLERR, where + ": zcylinder radius = " + arg[iarg + 1] + " must be > 0");
+    lo = hi = 0.0;
+    iarg += 2;
+  } else {
+    error->all(FLERR, where + ": wall style '" + ws +
+                          "' is unknown; allowed: xplane, yplane, zplane, zcylinder");
+  }
+
+  // optional wall motion
+  wiggle = wshear = 0;
+  axis = 0;
+  amplitude = period = omega = vshear = 0.0;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "wiggle" || key == "shear") {
+      const int nval = (key == "wiggle") ? 3 : 2;
+      if (iarg + nval + 1 > narg)
+        error->all(FLERR, where + ": " + key + " needs " + std::to_string(nval) + " values (" +
+                              (key == "wiggle" ? "dim amplitude period" : "dim velocity") +
+                              "), got " + std::to_string(narg - iarg - 1));
+      const std::string dim = arg[iarg + 1];
+      if (dim == "x") axis = 0;
+      else if (dim == "y") axis = 1;
+      else if (dim == "z") axis = 2;
+      else error->all(FLERR, where + ": " + key + " dimension '" + dim + "' is unknown; allowed: x, y, z");
+      if (key == "wiggle") {
+        amplitude = wall_number(lmp, where, "wiggle amplitude", arg[iarg + 2]);
+        period = wall_number(lmp, where, "wiggle period", arg[iarg + 3]);
+        if (!(period > 0.0))
+          error->all(FLERR, where + ": wiggle period = " + arg[iarg + 3] + " must be > 0");
+        wiggle = 1;
+      } else {
+        vshear = wall_number(lmp, where, "shear velocity", arg[iarg + 2]);
+        wshear = 1;
+      }
+      iarg += nval + 1;
+    } else {
+      error->all(FLERR, where + ": unexpected argument '" + key +
+                            "'; allowed after the wall style: wiggle dim A T, shear dim V");
+    }
+  }
+
+  if (wallstyle == XPLANE && domain->xperiodic)
+    error->all(FLERR, where + ": xplane wall in a periodic dimension");
+  if (wallstyle == YPLANE && domain->yperiodic)
+    error->all(FLERR, where + ": yplane wall in a periodic dimension");
+  if (wallstyle == ZPLANE && domain->zperiodic)
+    error->all(FLERR, where + ": zplane wall in a periodic dimension");
+  if (wallstyle == ZCYLINDER && (domain->xperiodic || domain->yperiodic))
+    error->all(FLERR, where + ": zcylinder wall needs non-periodic x and y");
+  if (wiggle && wshear) error->all(FLERR, where + ": cannot both wiggle and shear");
+  if (wiggle && wallstyle == ZCYLINDER && axis != 2)
+    error->all(FLERR, where + ": a zcylinder wall can wiggle along z only");
+  if (wshear && wallstyle == axis)
+    error->all(FLERR, where + ": a plane wall cannot shear along its own normal");
+
+  if (wiggle) omega = 2.0 * M_PI / period;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  nmax = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    for (int m = 0; m < size_history; m++) history_one[i][m] = 0.0;
+
+  time_origin = update->ntimestep;
+}
+
+FixTDEMWallGran::~FixTDEMWallGran()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(history_one);
+  memory->destroy(mass_rigid);
+}
+
+int FixTDEMWallGran::setmask()
+{
+  int mask = 0;
+  mask |= POST_FORCE;
+  mask |= POST_FORCE_RESPA;
+  return mask;
+}
+
+void FixTDEMWallGran::init()
+{
+  dt = update->dt;
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    nlevels_respa = ((Respa *) update->integrate)->nlevels;
+  fix_rigid = nullptr;
+  for (int i = 0; i < modify->nfix; i++)
+    if (modify->fix[i]->rigid_flag) {
+      fix_rigid = modify->fix[i];
+      break;
+    }
+}
+
+void FixTDEMWallGran::setup(int vflag)
+{
+  if (utils::strmatch(update->integrate_style, "^verlet"))
+    post_force(vflag);
+  else {
+    ((Respa *) update->integrate)->copy_flevel_f(nlevels_respa - 1);
+    post_force_respa(vflag, nlevels_respa - 1, 0);
+    ((Respa *) update->integrate)->copy_f_flevel(nlevels_respa - 1);
+  }
+}
+
+namespace {
+struct WallRunner {
+  FixTDEMWallGran *f;
+  template <int M, int E, int S> void run() { f->template eval<M, E, S>(); }
+};
+}  // namespace
+
+void FixTDEMWallGran::post_force(int /*vflag*/)
+{
+  if (neighbor->ago == 0 && fix_rigid) {
+    int tmp;
+    int *body = (int *) fix_rigid->extract("body", tmp);
+    double *mass_body = (double *) fix_rigid->extract("masstotal", tmp);
+    if (atom->nmax > nmax) {
+      memory->destroy(mass_rigid);
+      nmax = atom->nmax;
+      memory->create(mass_rigid, nmax, "tdem/wall/gran:mass_rigid");
+    }
+    for (int i = 0; i < atom->nlocal; i++)
+      mass_rigid[i] = (body[i] >= 0) ? mass_body[body[i]] : 0.0;
+  }
+  tdem_lammps::dispatch(true, law.mode, law.end, law.slip, WallRunner{this});
+}
+
+template <int M, int E, int S> __attribute__((flatten, noinline)) void FixTDEMWallGran::eval()
+{
+  const bool history_update = !update->setupflag;
+
+  // wall position and velocity
+  double wlo = lo, whi = hi;
+  double vwall0[3] = {0.0, 0.0, 0.0};
+  if (wiggle) {
+    const double arg = omega * (update->ntimestep - time_origin) * dt;
+    if (wallstyle == axis) {
+      wlo = lo + amplitude - amplitude * cos(arg);
+      whi = hi + amplitude - amplitude * cos(arg);
+    }
+    vwall0[axis] = amplitude * omega * sin(arg);
+  } else if (wshear)
+    vwall0[axis] = vshear;
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **omg = atom->omega;
+  double **torque = atom->torque;
+  double *radius = atom->radius;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double dx = 0.0, dy = 0.0, dz = 0.0;
+    double vwall[3] = {vwall0[0], vwall0[1], vwall0[2]};
+
+    if (wallstyle == XPLANE) {
+      const double del1 = x[i][0] - wlo, del2 = whi - x[i][0];
+      dx = (del1 < del2) ? del1 : -del2;
+    } else if (wallstyle == YPLANE) {
+      const double del1 = x[i][1] - wlo, del2 = whi - x[i][1];
+      dy = (del1 < del2) ? del1 : -del2;
+    } else if (wallstyle == ZPLANE) {
+      const double del1 = x[i][2] - wlo, del2 = whi - x[i][2];
+      dz = (del1 < del2) ? del1 : -del2;
+    } else {
+      const double delxy = sqrt(x[i][0] * x[i][0] + x[i][1] * x[i][1]);
+      const double delr = cylradius - delxy;
+      if (delr > radius[i]) {
+        dz = cylradius;
+      } else {
+        dx = -delr / delxy * x[i][0];
+        dy = -delr / delxy * x[i][1];
+        if (wshear && axis != 2) {  // rotating cylinder: tangential wall velocity
+          vwall[0] = vshear * x[i][1] / delxy;
+          vwall[1] = -vshear * x[i][0] / delxy;
+          vwall[2] = 0.0;
+        }
+      }
+    }
+
+    const double rsq = dx * dx + dy * dy + dz * dz;
+    const double rad = radius[i];
+    double *shear = history_one[i];
+    if (rsq > rad * rad) {
+      shear[0] = shear[1] = shear[2] = 0.0;
+      continue;
+    }
+
+    double meff = rmass[i];
+    if (fix_rigid && mass_rigid[i] > 0.0) meff = mass_rigid[i];
+
+    const double r = sqrt(rsq);
+    const double rinv = 1.0 / r;
+    const double rsqinv = 1.0 / rsq;
+    const double vr1 = v[i][0] - vwall[0];
+    const double vr2 = v[i][1] - vwall[1];
+    const double vr3 = v[i][2] - vwall[2];
+    const double wr1 = rad * omg[i][0] * rinv;
+    const double wr2 = rad * omg[i][1] * rinv;
+    const double wr3 = rad * omg[i][2] * rinv;
+
+    double ccel, fs[3];
+    tdem_lammps::evaluate_contact<M, E, S>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
+                                           vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
+                                           ccel, fs);
+
+    f[i][0] += dx * ccel + fs[0];
+    f[i][1] += dy * ccel + fs[1];
+    f[i][2] += dz * ccel + fs[2];
+    const double tor1 = rinv * (dy * fs[2] - dz * fs[1]);
+    const double tor2 = rinv * (dz * fs[0] - dx * fs[2]);
+    const double tor3 = rinv * (dx * fs[1] - dy * fs[0]);
+    torque[i][0] -= rad * tor1;
+    torque[i][1] -= rad * tor2;
+    torque[i][2] -= rad * tor3;
+  }
+}
+
+void FixTDEMWallGran::post_force_respa(int vflag, int ilevel, int /*iloop*/)
+{
+  if (ilevel == nlevels_respa - 1) post_force(vflag);
+}
+
+double FixTDEMWallGran::memory_usage()
+{
+  return (double) atom->nmax * size_history * sizeof(double) + (double) nmax * sizeof(double);
+}
+
+void FixTDEMWallGran::grow_arrays(int n)
+{
+  memory->grow(history_one, n, size_history, "tdem/wall/gran:history_one");
+}
+
+void FixTDEMWallGran::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int m = 0; m < size_history; m++) history_one[j][m] = history_one[i][m];
+}
+
+void FixTDEMWallGran::set_arrays(int i)
+{
+  for (int m = 0; m < size_history; m++) history_one[i][m] = 0.0;
+}
+
+int FixTDEMWallGran::pack_exchange(int i, double *buf)
+{
+  for (int m = 0; m < size_history; m++) buf[m] = history_one[i][m];
+  return size_history;
+}
+
+int FixTDEMWallGran::unpack_exchange(int nlocal, double *buf)
+{
+  for (int m = 0; m < size_history; m++) history_one[nlocal][m] = buf[m];
+  return size_history;
+}
+
+int FixTDEMWallGran::pack_restart(int i, double *buf)
+{
+  // buf[0] = number of values including itself, as every per-atom restart fix
+  int n = 0;
+  buf[n++] = size_history + 1;
+  for (int m = 0; m < size_history; m++) buf[n++] = history_one[i][m];
+  return n;
+}
+
+void FixTDEMWallGran::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  m++;
+  for (int k = 0; k < size_history; k++) history_one[nlocal][k] = extra[nlocal][m++];
+}
+
+int FixTDEMWallGran::maxsize_restart()
+{
+  return 1 + size_history;
+}
+
+int FixTDEMWallGran::size_restart(int /*nlocal*/)
+{
+  return 1 + size_history;
+}
+
+void FixTDEMWallGran::reset_dt()
+{
+  dt = update->dt;
+}

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: fix tdem/wall/gran, a frictional wall with the lsd + cundall_strack law.
+//
+//   fix ID group tdem/wall/gran normal lsd ... tangential cundall_strack ... [options]
+//       wallstyle args [wiggle dim A T | shear dim V]
+//   wallstyle: xplane lo hi | yplane lo hi | zplane lo hi (NULL = no wall) | zcylinder R
+//
+// The wall has infinite mass and radius: m* is the sphere mass (fix rigid body mass if any).
+// Per-atom history (tangential spring) migrates with the atoms and is written to restarts.
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(tdem/wall/gran,FixTDEMWallGran);
+// clang-format on
+#else
+
+#ifndef TDEM_LMP_FIX_TDEM_WALL_GRAN_H
+#define TDEM_LMP_FIX_TDEM_WALL_GRAN_H
+
+#include "fix.h"
+#include "tdem_lammps_law.h"
+
+namespace LAMMPS_NS {
+
+class FixTDEMWallGran : public Fix {
+ public:
+  FixTDEMWallGran(class LAMMPS *, int, char **);
+  ~FixTDEMWallGran() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  void post_force_respa(int, int, int) override;
+  double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  void reset_dt() override;
+
+  template <int M, int E, int S> void eval();
+
+ protected:
+  enum { XPLANE = 0, YPLANE = 1, ZPLANE = 2, ZCYLINDER = 3 };
+  tdem_lammps::LawCoeffs law;
+  int wallstyle, wiggle, wshear, axis;
+  double lo, hi, cylradius;
+  double amplitude, period, omega, vshear;
+  bigint time_origin;
+  double dt;
+  int nlevels_respa;
+  int size_history;
+  double **history_one;
+
+  class Fix *fix_rigid;
+  double *mass_rigid;
+  int nmax;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

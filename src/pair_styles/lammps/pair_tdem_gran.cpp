@@ -1,0 +1,547 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: pair style tdem/gran (see pair_tdem_gran.h and docs/lammps.md).
+//
+// Bookkeeping follows the LAMMPS conventions for granular pair styles with history: a
+// FixNeighHistory stores 3 values (the tangential spring elongation) per neighbour with a
+// touch flag, the pair asks for a size neighbour list with history, meff uses fix freeze and
+// fix rigid body masses, and the cutoff is the sum of the largest radii (including particles
+// a fix pour / fix deposit will insert).
+
+#include "pair_tdem_gran.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "fix.h"
+#include "fix_neigh_history.h"
+#include "force.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neigh_request.h"
+#include "neighbor.h"
+#include "update.h"
+
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+using tdem_lammps::LawCoeffs;
+
+/* ---------------------------------------------------------------------- */
+
+PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
+{
+  single_enable = 1;
+  single_extra = 10;  // fs_x fs_y fs_z |fs| vn_x vn_y vn_z vt_x vt_y vt_z (as gran/hooke/history)
+  svector = new double[single_extra];
+  neighprev = 0;
+  no_virial_fdotr_compute = 1;
+  centroidstressflag = CENTROID_NOTAVAIL;
+  finitecutflag = 1;
+  restartinfo = 1;
+  size_history = tdem::cundall_strack::history_size;
+  comm_forward = 1;               // rigid body masses
+  nondefault_history_transfer = 0;  // history[j][i] = -history[i][j] (shear flips sign)
+
+  onerad_dynamic = onerad_frozen = maxrad_dynamic = maxrad_frozen = nullptr;
+  uniform = true;
+  umode = uend = uslip = 0;
+  atom_ntypes = 0;
+  dt = 0.0;
+  freeze_group_bit = 0;
+  fix_rigid = nullptr;
+  mass_rigid = nullptr;
+  nmax = 0;
+
+  // placeholder for the FixNeighHistory, so it keeps the input-script position in the fix list
+  fix_history = nullptr;
+  id_dummy = "NEIGH_HISTORY_TDEM_DUMMY" + std::to_string(instance_me);
+  id_history = "NEIGH_HISTORY_TDEM" + std::to_string(instance_me);
+  modify->add_fix(id_dummy + " all DUMMY");
+}
+
+/* ---------------------------------------------------------------------- */
+
+PairTDEMGran::~PairTDEMGran()
+{
+  if (copymode) return;
+  delete[] svector;
+  if (!fix_history)
+    modify->delete_fix(id_dummy);
+  else
+    modify->delete_fix(id_history);
+
+  if (allocated) {
+    memory->destroy(setflag);
+    memory->destroy(cutsq);
+    delete[] onerad_dynamic;
+    delete[] onerad_frozen;
+    delete[] maxrad_dynamic;
+    delete[] maxrad_frozen;
+  }
+  memory->destroy(mass_rigid);
+}
+
+/* ---------------------------------------------------------------------- */
+
+namespace {
+struct PairRunner {
+  PairTDEMGran *p;
+  int eflag, vflag;
+  template <int M, int E, int S> void run() { p->template eval<M, E, S>(eflag, vflag); }
+};
+}  // namespace
+
+void PairTDEMGran::compute(int eflag, int vflag)
+{
+  ev_init(eflag, vflag);
+
+  // rigid body masses of owned and ghost atoms (as the LAMMPS granular styles)
+  if (fix_rigid && neighbor->ago == 0) {
+    int tmp;
+    int *body = (int *) fix_rigid->extract("body", tmp);
+    double *mass_body = (double *) fix_rigid->extract("masstotal", tmp);
+    if (atom->nmax > nmax) {
+      memory->destroy(mass_rigid);
+      nmax = atom->nmax;
+      memory->create(mass_rigid, nmax, "pair:mass_rigid");
+    }
+    const int nlocal = atom->nlocal;
+    for (int i = 0; i < nlocal; i++)
+      mass_rigid[i] = (body[i] >= 0) ? mass_body[body[i]] : 0.0;
+    comm->forward_comm_pair(this);
+  }
+
+  tdem_lammps::dispatch(uniform, umode, uend, uslip, PairRunner{this, eflag, vflag});
+
+  if (vflag_fdotr) virial_fdotr_compute();
+}
+
+// flatten: inline the kernels into each instantiation (the inliner's size limits would keep
+// cundall_strack::force out of line, which costs ~10 % of the pair time); noinline keeps the
+// 13 instantiations out of the dispatcher.
+template <int M, int E, int S>
+__attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*vflag*/)
+{
+  const bool shearupdate = !update->setupflag;
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **omega = atom->omega;
+  double **torque = atom->torque;
+  double *radius = atom->radius;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  const int newton_pair = force->newton_pair;
+  const int ntp1 = atom_ntypes + 1;
+  const LawCoeffs *lawtab = law.data();
+
+  const int inum = list->inum;
+  int *ilist = list->ilist;
+  int *numneigh = list->numneigh;
+  int **firstneigh = list->firstneigh;
+  int **firsttouch = fix_history->firstflag;
+  double **firstshear = fix_history->firstvalue;
+
+  for (int ii = 0; ii < inum; ii++) {
+    const int i = ilist[ii];
+    const double xtmp = x[i][0];
+    const double ytmp = x[i][1];
+    const double ztmp = x[i][2];
+    const double radi = radius[i];
+    const LawCoeffs *lawrow = lawtab + type[i] * ntp1;
+    int *touch = firsttouch[i];
+    double *allshear = firstshear[i];
+    int *jlist = firstneigh[i];
+    const int jnum = numneigh[i];
+
+    for (int jj = 0; jj < jnum; jj++) {
+      int j = jlist[jj];
+      j &= NEIGHMASK;
+
+      const double delx = xtmp - x[j][0];
+      const double dely = ytmp - x[j][1];
+      const double delz = ztmp - x[j][2];
+      const double rsq = delx * delx + dely * dely + delz * delz;
+      const double radj = radius[j];
+      const double radsum = radi + radj;
+      double *shear = &allshear[3 * jj];
+
+      if (rsq >= radsum * radsum) {
+        // not touching: forget the history
+        touch[jj] = 0;
+        shear[0] = 0.0;
+        shear[1] = 0.0;
+        shear[2] = 0.0;
+        continue;
+      }
+
+      const double r = sqrt(rsq);
+      const double rinv = 1.0 / r;
+      const double rsqinv = 1.0 / rsq;
+
+      // relative translational and rotational velocity
+      const double vr1 = v[i][0] - v[j][0];
+      const double vr2 = v[i][1] - v[j][1];
+      const double vr3 = v[i][2] - v[j][2];
+      const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
+      const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
+      const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
+
+      // effective mass: rigid body masses; a frozen partner has infinite mass
+      double mi = rmass[i];
+      double mj = rmass[j];
+      if (fix_rigid) {
+        if (mass_rigid[i] > 0.0) mi = mass_rigid[i];
+        if (mass_rigid[j] > 0.0) mj = mass_rigid[j];
+      }
+      double meff = mi * mj / (mi + mj);
+      if (mask[i] & freeze_group_bit) meff = mj;
+      if (mask[j] & freeze_group_bit) meff = mi;
+
+      touch[jj] = 1;
+      double ccel, fs[3];
+      tdem_lammps::evaluate_contact<M, E, S>(lawrow[type[j]], meff, delx, dely, delz, r, rinv,
+                                             rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3,
+                                             dt, shearupdate, shear, ccel, fs);
+
+      // forces and torques
+      const double fx = delx * ccel + fs[0];
+      const double fy = dely * ccel + fs[1];
+      const double fz = delz * ccel + fs[2];
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+
+      const double tor1 = rinv * (dely * fs[2] - delz * fs[1]);
+      const double tor2 = rinv * (delz * fs[0] - delx * fs[2]);
+      const double tor3 = rinv * (delx * fs[1] - dely * fs[0]);
+      torque[i][0] -= radi * tor1;
+      torque[i][1] -= radi * tor2;
+      torque[i][2] -= radi * tor3;
+
+      if (newton_pair || j < nlocal) {
+        f[j][0] -= fx;
+        f[j][1] -= fy;
+        f[j][2] -= fz;
+        torque[j][0] -= radj * tor1;
+        torque[j][1] -= radj * tor2;
+        torque[j][2] -= radj * tor3;
+      }
+
+      if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+    }
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairTDEMGran::allocate()
+{
+  allocated = 1;
+  const int n = atom->ntypes;
+  atom_ntypes = n;
+
+  memory->create(setflag, n + 1, n + 1, "pair:setflag");
+  for (int i = 1; i <= n; i++)
+    for (int j = i; j <= n; j++) setflag[i][j] = 0;
+  memory->create(cutsq, n + 1, n + 1, "pair:cutsq");
+
+  onerad_dynamic = new double[n + 1];
+  onerad_frozen = new double[n + 1];
+  maxrad_dynamic = new double[n + 1];
+  maxrad_frozen = new double[n + 1];
+  law.assign((size_t) (n + 1) * (n + 1), LawCoeffs());
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairTDEMGran::settings(int narg, char **arg)
+{
+  if (narg != 0)
+    error->all(FLERR,
+               std::string("pair_style tdem/gran takes no arguments (the law goes into "
+                           "pair_coeff), got '") +
+                   arg[0] + "' and " + std::to_string(narg - 1) + " more");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairTDEMGran::coeff(int narg, char **arg)
+{
+  if (narg < 2)
+    error->all(FLERR, "pair_coeff tdem/gran: needs I J normal lsd ... tangential cundall_strack ...");
+  if (!allocated) allocate();
+
+  int ilo, ihi, jlo, jhi;
+  utils::bounds(FLERR, arg[0], 1, atom->ntypes, ilo, ihi, error);
+  utils::bounds(FLERR, arg[1], 1, atom->ntypes, jlo, jhi, error);
+
+  const std::string where = std::string("pair_coeff ") + arg[0] + " " + arg[1] + " (tdem/gran)";
+  LawCoeffs c;
+  tdem_lammps::parse_law(lmp, where, narg, arg, 2, false, c);
+
+  int count = 0;
+  for (int i = ilo; i <= ihi; i++) {
+    for (int j = MAX(jlo, i); j <= jhi; j++) {
+      coeffs(i, j) = c;
+      coeffs(j, i) = c;
+      setflag[i][j] = 1;
+      count++;
+    }
+  }
+  if (count == 0)
+    error->all(FLERR, where + ": the type range selects no type pair (I <= J is required)");
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairTDEMGran::init_style()
+{
+  if (!atom->radius_flag || !atom->rmass_flag)
+    error->all(FLERR, "pair tdem/gran requires atom attributes radius, rmass (atom_style sphere)");
+  if (comm->ghost_velocity == 0)
+    error->all(FLERR, "pair tdem/gran requires ghost atoms store velocity: use comm_modify vel yes");
+
+  // a size neighbour list with history
+#if defined(TDEM_LAMMPS_ADD_REQUEST)
+  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
+#else
+  int irequest = neighbor->request(this, instance_me);
+  neighbor->requests[irequest]->size = 1;
+  neighbor->requests[irequest]->history = 1;
+#endif
+
+  dt = update->dt;
+
+  // on first init replace the placeholder with the FixNeighHistory that stores the history
+  if (fix_history == nullptr) {
+    const std::string cmd = id_history + " all NEIGH_HISTORY " + std::to_string(size_history);
+    fix_history = (FixNeighHistory *) modify->replace_fix(id_dummy, cmd, 1);
+    fix_history->pair = this;
+  }
+
+  // fix freeze: frozen particles have infinite mass
+  const int ifreeze = modify->find_fix_by_style("^freeze");
+  freeze_group_bit = (ifreeze < 0) ? 0 : modify->fix[ifreeze]->groupbit;
+
+  // fix rigid: use body masses (first rigid fix, as the LAMMPS granular styles)
+  fix_rigid = nullptr;
+  for (int i = 0; i < modify->nfix; i++)
+    if (modify->fix[i]->rigid_flag) {
+      fix_rigid = modify->fix[i];
+      break;
+    }
+
+  // largest radii per type, including particles fix pour / fix deposit will insert
+  const int ipour = modify->find_fix_by_style("^pour");
+  const int idep = modify->find_fix_by_style("^deposit");
+  for (int i = 1; i <= atom->ntypes; i++) {
+    onerad_dynamic[i] = onerad_frozen[i] = 0.0;
+    int itype = i;
+    if (ipour >= 0) onerad_dynamic[i] = *((double *) modify->fix[ipour]->extract("radius", itype));
+    itype = i;
+    if (idep >= 0) onerad_dynamic[i] = *((double *) modify->fix[idep]->extract("radius", itype));
+  }
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  int *type = atom->type;
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) {
+    if (mask[i] & freeze_group_bit)
+      onerad_frozen[type[i]] = MAX(onerad_frozen[type[i]], radius[i]);
+    else
+      onerad_dynamic[type[i]] = MAX(onerad_dynamic[type[i]], radius[i]);
+  }
+  MPI_Allreduce(&onerad_dynamic[1], &maxrad_dynamic[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&onerad_frozen[1], &maxrad_frozen[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
+
+  const int ifix = modify->find_fix(id_history);
+  if (ifix < 0) error->all(FLERR, "pair tdem/gran: could not find its fix " + id_history);
+  fix_history = (FixNeighHistory *) modify->fix[ifix];
+
+  // compile-time specialisation when every type pair uses the same variant
+  uniform = true;
+  bool first = true;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (!setflag[i][j]) continue;
+      const LawCoeffs &c = coeffs(i, j);
+      if (first) {
+        umode = c.mode;
+        uend = c.end;
+        uslip = c.slip;
+        first = false;
+      } else if (c.mode != umode || c.end != uend || c.slip != uslip) {
+        uniform = false;
+      }
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+double PairTDEMGran::init_one(int i, int j)
+{
+  if (!allocated) allocate();
+  if (!setflag[i][j])
+    error->all(FLERR,
+               "pair tdem/gran: no pair_coeff for type pair " + std::to_string(i) + " " +
+                   std::to_string(j) + " (this style has no mixing rule; set every type pair)");
+  coeffs(j, i) = coeffs(i, j);
+
+  // cutoff = sum of the largest I,J radii, dynamic/dynamic and dynamic/frozen
+  double cutoff = maxrad_dynamic[i] + maxrad_dynamic[j];
+  cutoff = MAX(cutoff, maxrad_frozen[i] + maxrad_dynamic[j]);
+  cutoff = MAX(cutoff, maxrad_dynamic[i] + maxrad_frozen[j]);
+  return cutoff;
+}
+
+/* ----------------------------------------------------------------------
+   one pair (compute pair/local etc.): force over distance, no history update
+------------------------------------------------------------------------- */
+
+double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, double /*factor_coul*/,
+                            double /*factor_lj*/, double &fforce)
+{
+  double *radius = atom->radius;
+  const double radi = radius[i], radj = radius[j];
+  const double radsum = radi + radj;
+  for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
+  fforce = 0.0;
+  if (rsq >= radsum * radsum) return 0.0;
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **omega = atom->omega;
+  const double delx = x[i][0] - x[j][0];
+  const double dely = x[i][1] - x[j][1];
+  const double delz = x[i][2] - x[j][2];
+  const double r = sqrt(rsq);
+  const double rinv = 1.0 / r;
+  const double rsqinv = 1.0 / rsq;
+  const double vr1 = v[i][0] - v[j][0];
+  const double vr2 = v[i][1] - v[j][1];
+  const double vr3 = v[i][2] - v[j][2];
+  const double wr1 = (radi * omega[i][0] + radj * omega[j][0]) * rinv;
+  const double wr2 = (radi * omega[i][1] + radj * omega[j][1]) * rinv;
+  const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
+
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  double mi = rmass[i], mj = rmass[j];
+  if (fix_rigid && mass_rigid) {
+    if (mass_rigid[i] > 0.0) mi = mass_rigid[i];
+    if (mass_rigid[j] > 0.0) mj = mass_rigid[j];
+  }
+  double meff = mi * mj / (mi + mj);
+  if (mask[i] & freeze_group_bit) meff = mj;
+  if (mask[j] & freeze_group_bit) meff = mi;
+
+  // the stored history of this pair (searched from the previous hit); a copy, not updated
+  double shear[3] = {0.0, 0.0, 0.0};
+  const int jnum = list->numneigh[i];
+  int *jlist = list->firstneigh[i];
+  for (int jj = 0; jj < jnum; jj++) {
+    neighprev++;
+    if (neighprev >= jnum) neighprev = 0;
+    if ((jlist[neighprev] & NEIGHMASK) == j) {
+      const double *h = &fix_history->firstvalue[i][3 * neighprev];
+      shear[0] = h[0];
+      shear[1] = h[1];
+      shear[2] = h[2];
+      break;
+    }
+  }
+
+  double ccel, fs[3];
+  tdem_lammps::evaluate_contact<-1, -1, -1>(coeffs(itype, jtype), meff, delx, dely, delz, r, rinv,
+                                            rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3, dt,
+                                            false, shear, ccel, fs);
+  fforce = ccel;
+  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+  svector[0] = fs[0];
+  svector[1] = fs[1];
+  svector[2] = fs[2];
+  svector[3] = sqrt(fs[0] * fs[0] + fs[1] * fs[1] + fs[2] * fs[2]);
+  svector[4] = delx * vnnr * rsqinv;
+  svector[5] = dely * vnnr * rsqinv;
+  svector[6] = delz * vnnr * rsqinv;
+  svector[7] = vr1 - svector[4];
+  svector[8] = vr2 - svector[5];
+  svector[9] = vr3 - svector[6];
+  return 0.0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairTDEMGran::write_restart(FILE *fp)
+{
+  const int version = 1;
+  fwrite(&version, sizeof(int), 1, fp);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      fwrite(&setflag[i][j], sizeof(int), 1, fp);
+      if (setflag[i][j]) fwrite(&coeffs(i, j), sizeof(LawCoeffs), 1, fp);
+    }
+}
+
+void PairTDEMGran::read_restart(FILE *fp)
+{
+  allocate();
+  const int me = comm->me;
+  int version = 0;
+  if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
+  MPI_Bcast(&version, 1, MPI_INT, 0, world);
+  if (version != 1)
+    error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
+                          " cannot be read (this build reads version 1)");
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
+      MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
+      if (setflag[i][j]) {
+        LawCoeffs c;
+        if (me == 0) utils::sfread(FLERR, &c, sizeof(LawCoeffs), 1, fp, nullptr, error);
+        MPI_Bcast(&c, sizeof(LawCoeffs), MPI_BYTE, 0, world);
+        coeffs(i, j) = c;
+        coeffs(j, i) = c;
+      }
+    }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void PairTDEMGran::reset_dt()
+{
+  dt = update->dt;
+}
+
+int PairTDEMGran::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  for (int i = 0; i < n; i++) buf[i] = mass_rigid[list[i]];
+  return n;
+}
+
+void PairTDEMGran::unpack_forward_comm(int n, int first, double *buf)
+{
+  for (int i = 0; i < n; i++) mass_rigid[first + i] = buf[i];
+}
+
+double PairTDEMGran::memory_usage()
+{
+  return (double) nmax * sizeof(double);
+}
+
+double PairTDEMGran::atom2cut(int i)
+{
+  return atom->radius[i] * 2;
+}
+
+double PairTDEMGran::radii2cut(double r1, double r2)
+{
+  return r1 + r2;
+}

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: pair style tdem/gran, the linear spring-dashpot normal law (tdem::lsd) with
+// the Cundall-Strack tangential law (tdem::cundall_strack), per type pair.
+//
+//   pair_style tdem/gran
+//   pair_coeff I J normal lsd stiffness KN GAMMAN tangential cundall_strack KT GAMMAT MU [options]
+//   pair_coeff I J normal lsd restitution E TC tangential cundall_strack KAPPA MU [options]
+//   options: damping mass|absolute, limit_force no|yes, slip spring_dashpot|spring
+//
+// Derives from Pair and uses only FixNeighHistory and NeighRequest (not the GRANULAR classes),
+// so the two files can be dropped into a LAMMPS src/ tree together with tdem_lammps_law.*,
+// and src/contact/ from tdem. See docs/lammps.md.
+
+#ifdef PAIR_CLASS
+// clang-format off
+PairStyle(tdem/gran,PairTDEMGran);
+// clang-format on
+#else
+
+#ifndef TDEM_LMP_PAIR_TDEM_GRAN_H
+#define TDEM_LMP_PAIR_TDEM_GRAN_H
+
+#include "pair.h"
+#include "tdem_lammps_law.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class PairTDEMGran : public Pair {
+ public:
+  PairTDEMGran(class LAMMPS *);
+  ~PairTDEMGran() override;
+  void compute(int, int) override;
+  void settings(int, char **) override;
+  void coeff(int, char **) override;
+  void init_style() override;
+  double init_one(int, int) override;
+  double single(int, int, int, int, double, double, double, double &) override;
+  void write_restart(FILE *) override;
+  void read_restart(FILE *) override;
+  void reset_dt() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
+  double memory_usage() override;
+  double atom2cut(int) override;
+  double radii2cut(double, double) override;
+
+  // evaluation body, instantiated per (mode, end, slip); public for the dispatcher
+  template <int M, int E, int S> void eval(int eflag, int vflag);
+
+ protected:
+  double dt;
+  int freeze_group_bit;
+  int size_history;
+  int neighprev;
+  double *onerad_dynamic, *onerad_frozen;
+  double *maxrad_dynamic, *maxrad_frozen;
+
+  // per type pair coefficients, (ntypes+1)^2, symmetric
+  std::vector<tdem_lammps::LawCoeffs> law;
+  bool uniform;  // all set type pairs share mode, end and slip
+  int umode, uend, uslip;
+
+  class FixNeighHistory *fix_history;
+  std::string id_history, id_dummy;
+
+  class Fix *fix_rigid;
+  double *mass_rigid;
+  int nmax;
+
+  void allocate();
+  tdem_lammps::LawCoeffs &coeffs(int i, int j) { return law[i * (atom_ntypes + 1) + j]; }
+  int atom_ntypes;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: the linear spring-dashpot normal law (tdem::lsd) with the Cundall-Strack
+// tangential law (tdem::cundall_strack), as used by pair tdem/gran and fix tdem/wall/gran.
+//
+// This header is host-specific glue: it holds the per-type-pair coefficients, the argument
+// parser shared by pair_coeff and the wall fix (tdem_lammps_law.cpp), and the per-contact
+// evaluation that feeds the host-independent kernels in src/contact/.
+//
+// Rounding order. LAMMPS gran/hooke/history forms the normal "force over distance"
+//   ccel = kn*(radsum - r)*rinv - (meff*gamman*vnnr)*rsqinv
+// while tdem::lsd::force forms F = gamma*xi_dot + k*xi. To reproduce the stock style bit for
+// bit, the adapter takes the kernel's separate pieces (NormalResult::elastic = k*xi and
+// NormalResult::damping = gamma) and combines them in LAMMPS's order (lsd_force_over_distance
+// below); the zero_force clip is applied to ccel exactly where LAMMPS applies limit_damping.
+#pragma once
+
+#include "contact/normal/linear_viscoelastic.h"
+#include "contact/tangential/cundall_strack.h"
+
+#include <cmath>
+#include <string>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace tdem_lammps {
+
+// How the normal coefficients are given.
+enum LawMode : int {
+  MODE_STIFFNESS_MASS = 0,  // k = KN, gamma = m* GAMMAN   (gran/hooke/history, GAMMAN in 1/time)
+  MODE_STIFFNESS_ABS = 1,   // k = KN, gamma = GAMMAN      (GAMMAN in mass/time)
+  MODE_RESTITUTION = 2      // k = m* omega0^2, gamma = m* 2 delta from (e, t_c); kt = KAPPA k
+};
+
+// Coefficients of one type pair (or of one wall). Plain data, written to restart files.
+struct LawCoeffs {
+  int mode = MODE_STIFFNESS_MASS;
+  int end = 0;   // 0 = zero_overlap (limit_force no), 1 = zero_force (limit_force yes)
+  int slip = 1;  // 0 = spring (cap the spring force), 1 = spring_dashpot (cap spring + dashpot)
+  int pad = 0;
+  // user input
+  double kn = 0, gamman = 0, kt = 0, gammat = 0, mu = 0;  // stiffness modes
+  double e = 0, tc = 0, kappa = 0;                          // restitution mode (mu shared)
+  // derived (restitution mode): per unit effective mass
+  double k_per_mass = 0, gamma_per_mass = 0;
+};
+
+inline tdem::ContactEnd contact_end(int end) {
+  return end ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
+}
+inline tdem::cundall_strack::SlipRule slip_rule(int slip) {
+  return slip ? tdem::cundall_strack::SlipRule::spring_dashpot_cap
+              : tdem::cundall_strack::SlipRule::spring_cap;
+}
+
+// Parse "normal lsd ... tangential cundall_strack ... [options]" starting at arg[iarg].
+// `where` names the command in error messages ("pair_coeff 1 1", "fix wall tdem/wall/gran").
+// With stop_at_unknown = true, parsing ends at the first word that is not a law keyword
+// (the wall fix continues with its wall arguments); otherwise an unknown word is an error.
+// Returns the index of the first unparsed argument. Errors go through error->all.
+int parse_law(LAMMPS_NS::LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
+              bool stop_at_unknown, LawCoeffs &out);
+
+// Derive the per-unit-mass rates of restitution mode; errors through error->all.
+void derive_law(LAMMPS_NS::LAMMPS *lmp, const std::string &where, LawCoeffs &c);
+
+// Human-readable summary (log output).
+std::string describe_law(const LawCoeffs &c);
+
+// ------------------------------------------------------------------- per-contact evaluation
+// LAMMPS-order combination of the lsd kernel's pieces (proposed for src/contact as
+// tdem::lsd::force_over_distance): ccel = F/r with F = k xi + gamma xi_dot, xi_dot = -vnnr/r.
+template <tdem::ContactEnd End>
+inline double lsd_force_over_distance(const tdem::NormalResult<double> &res, double vnnr,
+                                      double rinv, double rsqinv) {
+  double ccel = res.elastic * rinv - res.damping * vnnr * rsqinv;
+  if constexpr (End == tdem::ContactEnd::zero_force) {
+    if (ccel < 0.0) ccel = 0.0;
+  }
+  return ccel;
+}
+
+// One contact. del = x_i - x_j (or sphere centre minus wall point), overlap = radsum - r,
+// vr = relative translational velocity v_i - v_j, wr = relative rotational term
+// (rad_i w_i + rad_j w_j)/r. Writes ccel (normal force over r, along del) and the tangential
+// force fs on i. M, E, S are LawMode, end, slip; -1 reads them from c at run time.
+template <int M, int E, int S>
+inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, double dely,
+                             double delz, double r, double rinv, double rsqinv, double overlap,
+                             double vr1, double vr2, double vr3, double wr1, double wr2,
+                             double wr3, double dt, bool update, double *shear, double &ccel,
+                             double *fs) {
+  const int mode = M >= 0 ? M : c.mode;
+  const int end = E >= 0 ? E : c.end;
+  const int slip = S >= 0 ? S : c.slip;
+
+  // normal component of the relative velocity, tangential rest
+  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+  const double vn1 = delx * vnnr * rsqinv;
+  const double vn2 = dely * vnnr * rsqinv;
+  const double vn3 = delz * vnnr * rsqinv;
+  const double vt1 = vr1 - vn1;
+  const double vt2 = vr2 - vn2;
+  const double vt3 = vr3 - vn3;
+
+  // coefficients of this contact
+  tdem::lsd::Coefficients<double> nc;
+  tdem::cundall_strack::Params<double> tp;
+  tp.mu = c.mu;
+  if (mode == MODE_STIFFNESS_MASS) {
+    nc.k = c.kn;
+    nc.gamma = meff * c.gamman;
+    tp.kt = c.kt;
+    tp.gammat = meff * c.gammat;
+  } else if (mode == MODE_STIFFNESS_ABS) {
+    nc.k = c.kn;
+    nc.gamma = c.gamman;
+    tp.kt = c.kt;
+    tp.gammat = c.gammat;
+  } else {
+    nc.k = meff * c.k_per_mass;
+    nc.gamma = meff * c.gamma_per_mass;
+    tp.kt = c.kappa * nc.k;
+    tp.gammat = 0.0;
+  }
+
+  // normal law
+  const tdem::NormalKinematics<double> nk{overlap, -vnnr * rinv, meff, 0.0};
+  if (end) {
+    const auto res = tdem::lsd::force<tdem::ContactEnd::zero_force>(nc, nk);
+    ccel = lsd_force_over_distance<tdem::ContactEnd::zero_force>(res, vnnr, rinv, rsqinv);
+  } else {
+    const auto res = tdem::lsd::force<tdem::ContactEnd::zero_overlap>(nc, nk);
+    ccel = lsd_force_over_distance<tdem::ContactEnd::zero_overlap>(res, vnnr, rinv, rsqinv);
+  }
+
+  // relative velocity of the contact point
+  tdem::cundall_strack::Kinematics<double> tk;
+  tk.d[0] = delx;
+  tk.d[1] = dely;
+  tk.d[2] = delz;
+  tk.d_scale = rsqinv;
+  tk.vt[0] = vt1 - (delz * wr2 - dely * wr3);
+  tk.vt[1] = vt2 - (delx * wr3 - delz * wr1);
+  tk.vt[2] = vt3 - (dely * wr1 - delx * wr2);
+  tk.dt = dt;
+
+  // tangential law (normal force magnitude ccel*r)
+  if (slip)
+    tdem::cundall_strack::force<tdem::cundall_strack::SlipRule::spring_dashpot_cap>(
+        tp, tk, ccel * r, update, shear, fs);
+  else
+    tdem::cundall_strack::force<tdem::cundall_strack::SlipRule::spring_cap>(tp, tk, ccel * r,
+                                                                          update, shear, fs);
+}
+
+// Dispatch helper: calls F.template run<M,E,S>() for the combination (all compile-time) or
+// the run-time fallback run<-1,-1,-1>() when `uniform` is false.
+template <class F>
+inline void dispatch(bool uniform, int mode, int end, int slip, F &&f) {
+  if (!uniform) return f.template run<-1, -1, -1>();
+#define TDEM_LMP_CASE(m, e, s) \
+  if (mode == m && end == e && slip == s) return f.template run<m, e, s>();
+  TDEM_LMP_CASE(0, 0, 0) TDEM_LMP_CASE(0, 0, 1) TDEM_LMP_CASE(0, 1, 0) TDEM_LMP_CASE(0, 1, 1)
+  TDEM_LMP_CASE(1, 0, 0) TDEM_LMP_CASE(1, 0, 1) TDEM_LMP_CASE(1, 1, 0) TDEM_LMP_CASE(1, 1, 1)
+  TDEM_LMP_CASE(2, 0, 0) TDEM_LMP_CASE(2, 0, 1) TDEM_LMP_CASE(2, 1, 0) TDEM_LMP_CASE(2, 1, 1)
+#undef TDEM_LMP_CASE
+  f.template run<-1, -1, -1>();
+}
+
+}  // namespace tdem_lammps

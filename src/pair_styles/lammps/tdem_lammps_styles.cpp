@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "tdem_lammps_styles.h"
+
+#include "fix_tdem_wall_gran.h"
+#include "force.h"
+#include "lammps.h"
+#include "modify.h"
+#include "pair_tdem_gran.h"
+#include "version.h"
+
+using namespace LAMMPS_NS;
+
+namespace tdem_lammps {
+
+namespace {
+Pair *create_pair_tdem_gran(LAMMPS *lmp)
+{
+  return new PairTDEMGran(lmp);
+}
+Fix *create_fix_tdem_wall_gran(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixTDEMWallGran(lmp, narg, arg);
+}
+
+const StyleEntry table[] = {
+    {StyleKind::pair, "tdem/gran", "tdem pair style tdem/gran (lsd + cundall_strack)",
+     (void *) &create_pair_tdem_gran},
+    {StyleKind::fix, "tdem/wall/gran", "tdem fix style tdem/wall/gran (lsd + cundall_strack)",
+     (void *) &create_fix_tdem_wall_gran},
+    {StyleKind::pair, nullptr, nullptr, nullptr}};
+}  // namespace
+
+const StyleEntry *style_table()
+{
+  return table;
+}
+
+void register_styles(LAMMPS *lmp)
+{
+  for (const StyleEntry *e = table; e->name; ++e) {
+    if (e->kind == StyleKind::pair)
+      (*lmp->force->pair_map)[e->name] = (Force::PairCreator) e->creator;
+    else
+      (*lmp->modify->fix_map)[e->name] = (Modify::FixCreator) e->creator;
+  }
+}
+
+const char *compiled_lammps_version()
+{
+  return LAMMPS_VERSION;
+}
+
+}  // namespace tdem_lammps

@@ -1,0 +1,121 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Bad input to pair tdem/gran and fix tdem/wall/gran ends with a LAMMPS error (error->all):
+exit status > 0 (not a signal, no segfault), an 'ERROR' line, and a message that names the
+keyword, the offending value and what is allowed. A good input is run as a control."""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import lmp_common as lc  # noqa: E402
+
+args = lc.parse_args(sys.argv)
+chk = lc.Checker("lammps_bad_input")
+
+BASE = """
+units si
+atom_style sphere
+boundary f f f
+newton off
+comm_modify vel yes
+region box block 0 0.1 0 0.1 0 0.1 units box
+create_box 2 box
+create_atoms 1 single 0.05 0.05 0.05 units box
+create_atoms 2 single 0.05 0.05 0.0545 units box
+set group all diameter 0.005
+set group all density 2500
+fix nve all nve/sphere
+timestep 1e-6
+{body}
+run 10
+"""
+GOOD = "normal lsd stiffness 2000 50 tangential cundall_strack 600 25 0.5"
+GOODR = "normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.5"
+WALL = "fix w all tdem/wall/gran {law} {wall}"
+
+
+def pair(coeff, style="pair_style tdem/gran"):
+    return "%s\npair_coeff * * %s" % (style, coeff)
+
+
+CASES = [
+    # name, body, expected substrings
+    ("unknown normal law", pair("normal hertz 2000 50 tangential cundall_strack 600 25 0.5"),
+     ["normal law 'hertz' is unknown", "allowed: lsd"]),
+    ("unknown tangential law", pair("normal lsd stiffness 2000 50 tangential mindlin 600 25 0.5"),
+     ["tangential law 'mindlin' is unknown", "allowed: cundall_strack"]),
+    ("unknown parametrisation", pair("normal lsd damped 2000 50 tangential cundall_strack 600 25 0.5"),
+     ["parametrisation 'damped' is unknown", "stiffness KN GAMMAN", "restitution E TC"]),
+    ("missing normal value", pair("normal lsd stiffness 2000 tangential cundall_strack 600 25 0.5"),
+     ["normal lsd stiffness needs 2 values (KN GAMMAN), got 1"]),
+    ("missing tangential value", pair("normal lsd stiffness 2000 50 tangential cundall_strack 600 25"),
+     ["needs 3 values (KT GAMMAT MU), got 2"]),
+    ("too many normal values", pair("normal lsd stiffness 2000 50 7 tangential cundall_strack 600 25 0.5"),
+     ["expected 'tangential cundall_strack ...' after the normal law, got '7'"]),
+    ("restitution tangential count", pair("normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8"),
+     ["needs 2 values (KAPPA MU), got 1"]),
+    ("negative KN", pair("normal lsd stiffness -2000 50 tangential cundall_strack 600 25 0.5"),
+     ["KN = -2000 must be > 0"]),
+    ("negative GAMMAN", pair("normal lsd stiffness 2000 -50 tangential cundall_strack 600 25 0.5"),
+     ["GAMMAN = -50 must be >= 0"]),
+    ("zero KT", pair("normal lsd stiffness 2000 50 tangential cundall_strack 0 25 0.5"),
+     ["KT = 0 must be > 0"]),
+    ("negative MU", pair("normal lsd stiffness 2000 50 tangential cundall_strack 600 25 -0.5"),
+     ["MU = -0.5 must be >= 0"]),
+    ("e above 1", pair("normal lsd restitution 1.5 1e-4 tangential cundall_strack 0.8 0.5"),
+     ["restitution E = 1.5 is outside the allowed range (0, 1]"]),
+    ("e zero", pair("normal lsd restitution 0 1e-4 tangential cundall_strack 0.8 0.5"),
+     ["restitution E = 0 is outside the allowed range (0, 1]"]),
+    ("contact time zero", pair("normal lsd restitution 0.6 0 tangential cundall_strack 0.8 0.5"),
+     ["TC (contact time) = 0 must be > 0"]),
+    ("contact time negative", pair("normal lsd restitution 0.6 -1e-4 tangential cundall_strack 0.8 0.5"),
+     ["TC (contact time) = -0.0001 must be > 0"]),
+    ("zero KAPPA", pair("normal lsd restitution 0.6 1e-4 tangential cundall_strack 0 0.5"),
+     ["KAPPA (kt/kn) = 0 must be > 0"]),
+    ("not a number", pair("normal lsd stiffness 2e3x 50 tangential cundall_strack 600 25 0.5"),
+     ["KN expects a finite number, got '2e3x'"]),
+    ("infinite", pair("normal lsd stiffness inf 50 tangential cundall_strack 600 25 0.5"),
+     ["KN expects a finite number, got 'inf'"]),
+    ("bad option value", pair(GOOD + " limit_force maybe"),
+     ["limit_force 'maybe' is unknown; allowed: yes, no"]),
+    ("bad slip value", pair(GOOD + " slip sticky"),
+     ["slip 'sticky' is unknown; allowed: spring_dashpot, spring"]),
+    ("bad damping value", pair(GOOD + " damping viscous"),
+     ["damping 'viscous' is unknown; allowed: mass, absolute"]),
+    ("damping with restitution", pair(GOODR + " damping mass"),
+     ["'damping mass' applies to 'normal lsd stiffness' only"]),
+    ("unknown option", pair(GOOD + " rolling sds"),
+     ["unexpected argument 'rolling'", "allowed options"]),
+    ("missing law", pair(""),
+     ["expected 'normal lsd ...' first, got 'end of line'"]),
+    ("pair_style arguments", pair(GOOD, "pair_style tdem/gran 2000 50"),
+     ["pair_style tdem/gran takes no arguments", "'2000'"]),
+    ("missing type pair", "pair_style tdem/gran\npair_coeff 1 1 " + GOOD + "\npair_coeff 2 2 " + GOOD,
+     ["no pair_coeff for type pair 1 2"]),
+    ("wall unknown style", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="plane 0 0.1"),
+     ["wall style 'plane' is unknown; allowed: xplane, yplane, zplane, zcylinder"]),
+    ("wall missing hi", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0"),
+     ["wall style zplane needs 2 values (lo hi, NULL = no wall), got 1"]),
+    ("wall lo above hi", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0.1 0"),
+     ["zplane lo = 0.1 must be below hi = 0"]),
+    ("wall bad restitution", pair(GOOD) + "\n" + WALL.format(
+        law="normal lsd restitution 2 1e-4 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL"),
+     ["fix w tdem/wall/gran", "restitution E = 2 is outside the allowed range (0, 1]"]),
+    ("wall no wall style", pair(GOOD) + "\nfix w all tdem/wall/gran " + GOOD,
+     ["missing wall style"]),
+    ("wall bad motion", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0 NULL wiggle q 0.01 1"),
+     ["wiggle dimension 'q' is unknown; allowed: x, y, z"]),
+]
+
+wd = lc.workdir("bad")
+for k, (name, body, expect) in enumerate(CASES):
+    rc, out = lc.run(args["tdem"], BASE.format(body=body), wd, "in.bad%02d" % k, check=False)
+    err = [l for l in out.splitlines() if "ERROR" in l]
+    ok = rc > 0 and err and all(e in out for e in expect)
+    chk.check(ok, "%s: exit %d, %s" % (name, rc, err[0].strip() if err else "no ERROR line"))
+
+for name, body in (("good stiffness", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0 NULL")),
+                   ("good restitution", pair(GOODR) + "\n" + WALL.format(law=GOODR, wall="zcylinder 0.2"))):
+    rc, out = lc.run(args["tdem"], BASE.format(body=body).replace("0.05 0.05", "0 0"), wd, "in.good", check=False)
+    chk.check(rc == 0 and "Loop time" in out, "control %s: runs (exit %d)" % (name, rc))
+chk.done()

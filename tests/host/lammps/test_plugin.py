@@ -1,0 +1,66 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The LAMMPS plugin (tdem_lammps_plugin.so, lammpsplugin_init) and the `plugin` command.
+
+1. The settling-bed input run by tdem-lammps with its built-in styles and the same input
+   preceded by `plugin load tdem_lammps_plugin.so` give identical thermo output and dumps;
+   the log shows that the plugin's creators replaced the built-in ones (so the plugin code
+   ran) and `plugin list` lists both styles.
+2. `clear` rebuilds LAMMPS's style tables; the tdem styles (built-in and plugin-loaded) must
+   still be usable after it.
+3. The example input_scripts/lammps/in.tdem_settle (run shortened) runs with the built-in
+   styles and with `-var plugin <so>` (its plugin path), with identical thermo output.
+4. `plugin load` of a missing file and of a shared object without lammpsplugin_init end with
+   an error that names the file.
+"""
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import lmp_common as lc  # noqa: E402
+
+args = lc.parse_args(sys.argv)
+chk = lc.Checker("lammps_plugin")
+N = 3000
+wd = lc.workdir("plugin")
+base = lc.scene(lc.tdem_interaction(), N, "dump.builtin")
+_, out_b = lc.run(args["tdem"], base, wd, "in.builtin")
+plug = "plugin load %s\nplugin list\n" % args["plugin"] + lc.scene(lc.tdem_interaction(), N, "dump.plugin")
+_, out_p = lc.run(args["tdem"], plug, wd, "in.plugin")
+chk.check("Loading plugin: tdem pair style tdem/gran" in out_p and
+          "Loading plugin: tdem fix style tdem/wall/gran" in out_p, "plugin: both styles loaded")
+chk.check("Overriding built-in pair style tdem/gran from plugin" in out_p and
+          "Overriding built-in fix style tdem/wall/gran from plugin" in out_p,
+          "plugin: plugin creators replaced the built-in ones")
+chk.check("pair style plugin tdem/gran" in out_p and "fix style plugin tdem/wall/gran" in out_p,
+          "plugin list shows both styles")
+tb, tp = lc.thermo_blocks(out_b), lc.thermo_blocks(out_p)
+chk.check(len(tb) > 3 and tb == tp, "plugin: thermo output identical to built-in (%d lines)" % len(tb))
+_, a = lc.read_dump(os.path.join(wd, "dump.builtin"))
+_, b = lc.read_dump(os.path.join(wd, "dump.plugin"))
+chk.check(a.shape == b.shape and (a == b).all(), "plugin: dump identical to built-in")
+
+# clear: built-in and plugin styles survive
+for name, pre in (("builtin", ""), ("plugin", "plugin load %s\n" % args["plugin"])):
+    text = pre + "clear\n" + lc.scene(lc.tdem_interaction(), 200, "dump.clear_" + name)
+    rc, out = lc.run(args["tdem"], text, wd, "in.clear_" + name, check=False)
+    chk.check(rc == 0 and "Loop time" in out, "clear (%s): tdem styles usable after clear" % name)
+
+# the example script, built in and through its plugin switch
+ex = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "input_scripts",
+                  "lammps", "in.tdem_settle")
+text = open(ex).read().replace("run             50000", "run             3000")
+_, o1 = lc.run(args["tdem"], text, wd, "in.settle")
+_, o2 = lc.run(args["tdem"], text, wd, "in.settle_plugin", extra=("-var", "plugin", args["plugin"]))
+t1, t2 = lc.thermo_blocks(o1), lc.thermo_blocks(o2)
+chk.check("Loading plugin" in o2 and "Loading plugin" not in o1 and len(t1) > 1 and t1 == t2,
+          "example in.tdem_settle: built-in and plugin runs identical (%d thermo lines)" % len(t1))
+
+# bad plugin files
+rc, out = lc.run(args["tdem"], "plugin load %s/nonexistent_plugin.so\n" % wd, wd, "in.bad1", check=False)
+chk.check(rc != 0 and rc > 0 and "plugin load: cannot open" in out and "nonexistent_plugin.so" in out,
+          "plugin load of a missing file: error naming the file (status %d)" % rc)
+libm = "/lib/x86_64-linux-gnu/libm.so.6"
+rc, out = lc.run(args["tdem"], "plugin load %s\n" % libm, wd, "in.bad2", check=False)
+chk.check(rc > 0 and "has no lammpsplugin_init" in out, "plugin load of a non-plugin: error (status %d)" % rc)
+chk.done()
