@@ -10,12 +10,12 @@
 # The thermo output of the two styles is also compared (identical physics => identical lines).
 #
 # usage: bench/lammps/bench_linear.sh [BUILD_DIR] [STEPS] [REPEATS]
-#   BUILD_DIR  default build-lammps (tdem-lammps is BUILD_DIR/bin/tdem-lammps)
+#   BUILD_DIR  default build (tdem-lammps is BUILD_DIR/bin/tdem-lammps)
 #   needs data.chute: from $TDEM_LAMMPS_SOURCE/bench (default: /opt/tdem-deps/lammps-*/bench
 #   or /var/cache/tdem/lammps-*/bench)
 set -eu
 here=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$here/build-lammps}" && pwd)
+build=$(cd "${1:-$here/build}" && pwd)
 steps=${2:-1000}
 repeats=${3:-2}
 exe=$build/bin/tdem-lammps

@@ -10,7 +10,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
 
 args = lc.parse_args(sys.argv)
-chk = lc.Checker("lammps_bad_input")
+chk = lc.Checker("lammps.bad_input")
 
 BASE = """
 units si

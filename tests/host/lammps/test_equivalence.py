@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
 
 args = lc.parse_args(sys.argv)
-chk = lc.Checker("lammps_equivalence")
+chk = lc.Checker("lammps.equivalence")
 NSTEPS = 12000
 
 for limit in (False, True):

@@ -19,7 +19,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
 
 args = lc.parse_args(sys.argv)
-chk = lc.Checker("lammps_examples")
+chk = lc.Checker("lammps.examples")
 EX = args["examples"]
 
 # example -> longest `run` kept (steps); chosen so that each takes a few seconds

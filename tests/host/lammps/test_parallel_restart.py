@@ -33,7 +33,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
 
 args = lc.parse_args(sys.argv)
-chk = lc.Checker("lammps_parallel_restart")
+chk = lc.Checker("lammps.parallel_restart")
 N = 12000
 
 # ---------------------------------------------------------------- 1. -np 2

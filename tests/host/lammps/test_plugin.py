@@ -20,7 +20,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
 
 args = lc.parse_args(sys.argv)
-chk = lc.Checker("lammps_plugin")
+chk = lc.Checker("lammps.plugin")
 N = 3000
 wd = lc.workdir("plugin")
 base = lc.scene(lc.tdem_interaction(), N, "dump.builtin")

@@ -12,7 +12,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
 
 args = lc.parse_args(sys.argv)
-chk = lc.Checker("lammps_plugin_host")
+chk = lc.Checker("lammps.plugin_host")
 host = args["host"]
 wd = lc.workdir("plugin_host")
 lc.run(host, lc.scene(lc.stock_interaction(), 6000, "dump.stock"), wd, "in.stock")

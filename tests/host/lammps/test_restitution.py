@@ -27,7 +27,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
 
 args = lc.parse_args(sys.argv)
-chk = lc.Checker("lammps_restitution")
+chk = lc.Checker("lammps.restitution")
 STEPS_PER_CONTACT = 400
 TOL = 2.0 / STEPS_PER_CONTACT
 RHO = 2500.0

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: entry points of the tdem LIGGGHTS styles.
+#pragma once
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace tdem {
+namespace liggghts {
+
+// Adds the tdem contact laws to LIGGGHTS's contact-model factories: the model names
+// (`model tdem/lsd`, `tangential tdem/cundall_strack`) and the compiled pair gran / wall gran
+// combinations. Call once, before the first `new LAMMPS(...)`. Idempotent.
+void register_styles();
+
+// Installs the checking "gran" model selector (better error messages for unknown model names
+// and for tdem combinations that are not compiled) and lets it report through this instance's
+// error path. Call right after `new LAMMPS(...)` (whose constructor installs LIGGGHTS's own
+// selector), and with nullptr before deleting the instance. Optional: without it, the tdem
+// models work and LIGGGHTS's generic messages are given.
+void attach(LAMMPS_NS::LAMMPS* lmp);
+
+}  // namespace liggghts
+}  // namespace tdem

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: reporting an error found on one rank only (inside the force loop) through LIGGGHTS's
+// error->one, so that the message is not lost.
+//
+// LIGGGHTS 3.8.0's Error::one writes to `screen` without flushing and calls MPI_Abort, so when
+// the output goes to a pipe or file the message is lost; it also never writes to the log file.
+// error_one() writes the message to the log file and makes `screen` unbuffered first.
+#pragma once
+
+#include <string>
+
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
+namespace tdem {
+namespace liggghts {
+
+[[noreturn]] void error_one(LAMMPS_NS::LAMMPS* lmp, const char* file, int line, const std::string& msg);
+
+}  // namespace liggghts
+}  // namespace tdem

@@ -1,0 +1,25 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: model ids of the tdem contact laws inside LIGGGHTS's contact-model factories.
+//
+// LIGGGHTS packs (normal, tangential, cohesion, rolling, surface) ids into one hash, 6 bits
+// each (Utils::generate_gran_hashcode), so every id must be < 64. The stock ids of
+// LIGGGHTS 3.8.0 are: normal 0-12 (NORMAL_OFF = 9), tangential 0-4, cohesion 0-8,
+// rolling 0-6, surface 0-5. tdem takes ids from 40 upwards so that they never meet a stock id;
+// the hash (and with it a restart file) of a tdem model is stable as long as these stay put.
+#pragma once
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+static const int TDEM_LSD = 40;             // model tdem/lsd
+static const int TDEM_CUNDALL_STRACK = 40;  // tangential tdem/cundall_strack
+
+}  // namespace ContactModels
+}  // namespace LIGGGHTS
+
+namespace tdem {
+namespace liggghts {
+inline constexpr const char* kNormalLsdName = "tdem/lsd";
+inline constexpr const char* kTangentialCundallStrackName = "tdem/cundall_strack";
+}  // namespace liggghts
+}  // namespace tdem

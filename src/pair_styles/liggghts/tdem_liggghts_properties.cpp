@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+#include "tdem_liggghts_properties.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "error.h"
+#include "fix_property_global.h"
+#include "lammps.h"
+
+namespace tdem {
+namespace liggghts {
+namespace {
+
+enum class Range { positive, non_negative, restitution };
+
+const char* describe(Range r) {
+  switch (r) {
+    case Range::positive: return "> 0";
+    case Range::non_negative: return ">= 0";
+    case Range::restitution: return "in (0, 1]";
+  }
+  return "";
+}
+
+bool ok(Range r, double v) {
+  if (!std::isfinite(v)) return false;
+  switch (r) {
+    case Range::positive: return v > 0.0;
+    case Range::non_negative: return v >= 0.0;
+    case Range::restitution: return v > 0.0 && v <= 1.0;
+  }
+  return false;
+}
+
+// Shortest of %.15g / %.17g that reads back as v (so 0.3 prints as 0.3).
+std::string format_value(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.15g", v);
+  if (std::strtod(buf, nullptr) != v) std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+void fail(LAMMPS_NS::LAMMPS* lmp, const char* fix_name, const char* caller, int i, int j, double v,
+          Range r) {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s: fix property/global %s has value %s for atom types %d %d; allowed: %s %s",
+                caller, fix_name, format_value(v).c_str(), i, j, fix_name, describe(r));
+  lmp->error->all(FLERR, buf);
+}
+
+MatrixProperty* create_checked(PropertyRegistry& registry, const char* fix_name, const char* caller,
+                               Range r) {
+  LAMMPS_NS::LAMMPS* lmp = registry.getLAMMPS();
+  const int n = registry.max_type();
+  LAMMPS_NS::FixPropertyGlobal* fix =
+      registry.getGlobalProperty(fix_name, "property/global", "peratomtypepair", n, n, caller);
+  MatrixProperty* m = new MatrixProperty(n + 1, n + 1);
+  for (int i = 1; i <= n; ++i)
+    for (int j = 1; j <= n; ++j) {
+      const double v = fix->compute_array(i - 1, j - 1);
+      if (!ok(r, v)) {
+        delete m;
+        fail(lmp, fix_name, caller, i, j, v, r);
+      }
+      m->data[i][j] = v;
+    }
+  return m;
+}
+
+}  // namespace
+
+MatrixProperty* create_restitution(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "coefficientRestitution", caller, Range::restitution);
+}
+MatrixProperty* create_contact_time(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "contactTime", caller, Range::positive);
+}
+MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "tangentialStiffnessRatio", caller, Range::non_negative);
+}
+
+void check_matrix(LAMMPS_NS::LAMMPS* lmp, double** m, int ntypes, const char* fix_name,
+                  const char* caller, int kind) {
+  const Range r = kind == 0 ? Range::positive : Range::non_negative;
+  for (int i = 1; i <= ntypes; ++i)
+    for (int j = 1; j <= ntypes; ++j)
+      if (!ok(r, m[i][j])) fail(lmp, fix_name, caller, i, j, m[i][j], r);
+}
+
+}  // namespace liggghts
+}  // namespace tdem

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: per-type-pair material properties for the tdem contact laws in LIGGGHTS, read from
+// `fix property/global NAME peratomtypepair N v11 v12 ... vNN` through LIGGGHTS's property
+// registry, with range checks whose messages name the property, the type pair, the value
+// and the allowed range.
+#pragma once
+
+#include <vector>
+
+#include "property_registry.h"
+
+namespace tdem {
+namespace liggghts {
+
+// Registry names (the prefix keeps them apart from stock registry entries of the same
+// fix property/global, which may apply other checks).
+inline constexpr const char* kPropRestitution = "tdem_coefficientRestitution";  // (0, 1]
+inline constexpr const char* kPropContactTime = "tdem_contactTime";             // > 0
+inline constexpr const char* kPropStiffnessRatio = "tdem_tangentialStiffnessRatio";  // >= 0
+
+MatrixProperty* create_restitution(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_contact_time(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* caller, bool);
+
+// error->all unless the range check holds for every type pair 1..ntypes of a connected matrix.
+// kind: 0 -> value > 0, 1 -> value >= 0. `fix_name` is the fix property/global name.
+void check_matrix(LAMMPS_NS::LAMMPS* lmp, double** m, int ntypes, const char* fix_name,
+                  const char* caller, int kind);
+
+// A dense (ntypes+1)^2 table of per-type-pair values, indexed by LIGGGHTS atom types.
+template <class V>
+class PairTable {
+ public:
+  void resize(int ntypes) {
+    stride_ = ntypes + 1;
+    v_.assign(static_cast<size_t>(stride_) * stride_, V{});
+  }
+  V& operator()(int i, int j) { return v_[static_cast<size_t>(i) * stride_ + j]; }
+  const V& operator()(int i, int j) const { return v_[static_cast<size_t>(i) * stride_ + j]; }
+
+ private:
+  int stride_ = 0;
+  std::vector<V> v_;
+};
+
+}  // namespace liggghts
+}  // namespace tdem

@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: keyword settings with a fixed list of words (e.g. `parameters stiffness|restitution`)
+// for LIGGGHTS contact models.
+//
+// LIGGGHTS's Settings class only lets a model register on/off, yes/no and number keywords; its
+// EnumSetting exists but Settings::registerSetting is private. register_enum() adds an
+// EnumSetting to a Settings object (see tdem_liggghts_settings.cpp for how) whose error
+// message also lists the allowed words.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "settings.h"
+
+namespace tdem {
+namespace liggghts {
+
+// Registers keyword `name` of the model `owner` (e.g. "model tdem/lsd") taking one of `words`; `target` receives the index of the chosen
+// word (default_index if the keyword is not given).
+void register_enum(Settings& settings, const std::string& owner, const std::string& name,
+                   int& target, const std::vector<std::string>& words, int default_index);
+
+// Registers an on/off keyword like Settings::registerOnOff (and shared with models that use
+// registerOnOff for the same keyword), with an error message that lists the allowed values.
+void register_on_off(Settings& settings, const std::string& owner, const std::string& name,
+                     bool& target, bool default_value);
+
+}  // namespace liggghts
+}  // namespace tdem

@@ -1,0 +1,135 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Bad input to the tdem LIGGGHTS styles must end with a LIGGGHTS error (error->all / error->one:
+exit status 1, never a signal) whose message names the keyword, the value and what is allowed.
+Every case asserts the exit status and the message text."""
+import re
+
+import tdem_lig as T
+
+GOOD_REST = {
+    "coefficientRestitution": "peratomtypepair 2 0.8 0.8 0.8 0.8",
+    "contactTime": "peratomtypepair 2 1e-4 1e-4 1e-4 1e-4",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+GOOD_STIFF = {
+    "kn": "peratomtypepair 2 1e4 1e4 1e4 1e4",
+    "kt": "peratomtypepair 2 3e3 3e3 3e3 3e3",
+    "gamman": "peratomtypepair 2 10 10 10 10",
+    "gammat": "peratomtypepair 2 1 1 1 1",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+
+
+def props(base, **changes):
+    p = dict(base)
+    for k, v in changes.items():
+        if v is None:
+            p.pop(k, None)
+        else:
+            p[k] = v
+    return "\n".join("fix p_%s all property/global %s %s" % (k, k, v) for k, v in p.items())
+
+
+def scene(pair_args, properties, wall_args=None):
+    wall = ""
+    if wall_args is not None:
+        wall = "fix w all wall/gran %s\n" % wall_args
+    return """
+atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region box block -0.05 0.05 -0.05 0.05 0 0.05 units box
+create_box 2 box
+neighbor 0.002 bin
+%s
+pair_style gran %s
+pair_coeff * *
+timestep 1e-6
+create_atoms 1 single 0 0 0.01 units box
+create_atoms 2 single 0 0 0.02 units box
+set group all diameter 0.005 density 2500
+%s
+fix integr all nve/sphere
+run 10
+""" % (properties, pair_args, wall)
+
+
+LSD = "model tdem/lsd tangential tdem/cundall_strack"
+LSD_REST = LSD + " parameters restitution"
+
+CASES = [
+    # name, pair_style args, properties, wall args or None, regexes the error line must match
+    ("unknown normal model", "model tdem/lsdx tangential history", props(GOOD_STIFF), None,
+     [r"keyword 'model'", r"unknown normal model 'tdem/lsdx'", r"allowed: .*hooke/stiffness.*tdem/lsd"]),
+    ("unknown tangential model", "model tdem/lsd tangential tdem/cundall", props(GOOD_STIFF), None,
+     [r"keyword 'tangential'", r"'tdem/cundall'", r"allowed: .*tdem/cundall_strack"]),
+    ("unknown model in wall/gran", LSD, props(GOOD_STIFF),
+     "model tdem/lsd tangential bogus primitive type 1 zplane 0.0",
+     [r"keyword 'tangential'", r"'bogus'", r"allowed: .*history"]),
+    ("combination not compiled", LSD + " cohesion sjkr", props(GOOD_STIFF), None,
+     [r"'model tdem/lsd tangential tdem/cundall_strack cohesion sjkr rolling_friction off surface default'",
+      r"not compiled", r"compiled tdem combinations"]),
+    ("parameters value", LSD + " parameters elastic", props(GOOD_STIFF), None,
+     [r"model tdem/lsd", r"keyword 'parameters'", r"'elastic'", r"allowed values: stiffness \| restitution"]),
+    ("limitForce value", LSD + " limitForce yes", props(GOOD_STIFF), None,
+     [r"keyword 'limitForce'", r"'yes'", r"allowed values: off \| on"]),
+    ("slip_rule value", LSD + " slip_rule dashpot", props(GOOD_STIFF), None,
+     [r"tangential tdem/cundall_strack", r"keyword 'slip_rule'", r"'dashpot'",
+      r"allowed values: spring \| spring_dashpot"]),
+    ("absolute_damping with restitution", LSD_REST + " absolute_damping on", props(GOOD_REST), None,
+     [r"absolute_damping on", r"parameters restitution", r"allowed with parameters stiffness"]),
+    ("missing contactTime", LSD_REST, props(GOOD_REST, contactTime=None), None,
+     [r"contactTime"]),
+    ("missing tangentialStiffnessRatio", LSD_REST, props(GOOD_REST, tangentialStiffnessRatio=None), None,
+     [r"tangentialStiffnessRatio"]),
+    ("restitution > 1", LSD_REST, props(GOOD_REST, coefficientRestitution="peratomtypepair 2 0.8 1.2 1.2 0.8"),
+     None, [r"coefficientRestitution", r"1\.2", r"types 1 2", r"\(0, 1\]"]),
+    ("restitution = 0", LSD_REST, props(GOOD_REST, coefficientRestitution="peratomtypepair 2 0.8 0.8 0.8 0"),
+     None, [r"coefficientRestitution", r"value 0 ", r"types 2 2", r"\(0, 1\]"]),
+    ("contactTime = 0", LSD_REST, props(GOOD_REST, contactTime="peratomtypepair 2 0 1e-4 1e-4 1e-4"), None,
+     [r"contactTime", r"value 0 ", r"types 1 1", r"> 0"]),
+    ("contactTime < 0", LSD_REST, props(GOOD_REST, contactTime="peratomtypepair 2 1e-4 1e-4 1e-4 -1e-4"), None,
+     [r"contactTime", r"-0\.0001", r"types 2 2", r"> 0"]),
+    ("contactTime < 0 via wall", LSD, props(GOOD_REST, contactTime="peratomtypepair 2 1e-4 1e-4 1e-4 -1e-4") +
+     "\n" + props(GOOD_STIFF), LSD + " primitive type 1 zplane 0.0 parameters restitution",
+     [r"contactTime", r"-0\.0001", r"> 0"]),
+    ("tangentialStiffnessRatio < 0", LSD_REST,
+     props(GOOD_REST, tangentialStiffnessRatio="peratomtypepair 2 0.3 -0.3 -0.3 0.3"), None,
+     [r"tangentialStiffnessRatio", r"-0\.3", r">= 0"]),
+    ("negative kn", LSD, props(GOOD_STIFF, kn="peratomtypepair 2 1e4 -5e3 -5e3 1e4"), None,
+     [r"model tdem/lsd", r"kn", r"-5000", r"types 1 2", r"> 0"]),
+    ("zero kn", LSD, props(GOOD_STIFF, kn="peratomtypepair 2 1e4 1e4 1e4 0"), None,
+     [r"kn", r"value 0 ", r"> 0"]),
+    ("negative gamman", LSD, props(GOOD_STIFF, gamman="peratomtypepair 2 10 10 10 -1"), None,
+     [r"gamman", r"-1", r">= 0"]),
+    ("missing kn", LSD, props(GOOD_STIFF, kn=None), None, [r"\bkn\b"]),
+    ("spring_dashpot with kt = 0", LSD, props(GOOD_STIFF, kt="peratomtypepair 2 0 0 0 0"),
+     LSD + " primitive type 1 zplane 0.008 slip_rule spring_dashpot",
+     [r"slip_rule spring_dashpot", r"kt > 0", r"kt = 0", r"types 1 1"]),
+    ("negative friction", LSD, props(GOOD_STIFF, coefficientFriction="peratomtypepair 2 0.5 -0.5 -0.5 0.5"),
+     None, [r"tangential tdem/cundall_strack", r"coefficientFriction", r"-0\.5", r">= 0"]),
+]
+
+
+def main():
+    args = T.parse_args()
+    checks = T.Checks()
+    d = T.workdir(args, "tdem_lig_bad_input")
+    for i, (name, pair_args, properties, wall_args, patterns) in enumerate(CASES):
+        r = T.run(args.tdem, scene(pair_args, properties, wall_args), d, "bad%d" % i, check=False, timeout=60)
+        out = r.stdout + r.stderr
+        err = [l for l in out.splitlines() if "ERROR" in l]
+        line = err[0] if err else ""
+        checks.check(r.returncode > 0, "%s: exit status %d (> 0, not a signal)" % (name, r.returncode))
+        missing = [p for p in patterns if not re.search(p, line)]
+        checks.check(bool(err) and not missing, "%s: message %r%s" % (
+            name, line, (" lacks " + ", ".join(missing)) if missing else ""))
+    checks.done()
+
+
+if __name__ == "__main__":
+    main()
