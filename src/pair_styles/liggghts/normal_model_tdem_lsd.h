@@ -12,6 +12,11 @@
 // parameters restitution: fix property/global coefficientRestitution, contactTime and
 //   tangentialStiffnessRatio; k and gamma of a contact are m* times per-type-pair rates
 //   derived once per run (tdem::lsd::rates_from_restitution_and_time), gammat = 0.
+// parameters material: fix property/global youngsModulus, poissonsRatio,
+//   characteristicVelocity, coefficientRestitution and tangentialStiffnessRatio; per contact
+//   k = the linear stiffness with Hertz's maximum overlap at the characteristic velocity
+//   (tdem::lsd::stiffness_matching_hertz, as model hooke), gamma from e for that k and m*
+//   in the convention of limitForce, kt = ratio * k, gammat = gamma if tangential_damping.
 // limitForce off: the contact ends at zero overlap (tdem::ContactEnd::zero_overlap);
 // limitForce on: the force is clipped at 0 (tdem::ContactEnd::zero_force). In restitution mode
 //   the (e, t_c) -> (k, gamma) derivation uses the same convention.
@@ -40,13 +45,13 @@ namespace ContactModels {
 template <>
 class NormalModel<TDEM_LSD> : public NormalModelBase {
  public:
-  enum Parameters { STIFFNESS = 0, RESTITUTION = 1 };
+  enum Parameters { STIFFNESS = 0, RESTITUTION = 1, MATERIAL = 2 };
 
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
       : NormalModelBase(lmp, hsetup, c) {}
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_enum(settings, "model tdem/lsd", "parameters", parameters_, {"stiffness", "restitution"},
+    tdem::liggghts::register_enum(settings, "model tdem/lsd", "parameters", parameters_, {"stiffness", "restitution", "material"},
                                   STIFFNESS);
     tdem::liggghts::register_on_off(settings, "model tdem/lsd", "tangential_damping", tangential_damping_, true);
     tdem::liggghts::register_on_off(settings, "model tdem/lsd", "absolute_damping", absolute_damping_, false);
@@ -54,10 +59,10 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
   }
 
   void postSettings(IContactHistorySetup*, ContactModelBase*) {
-    if (parameters_ == RESTITUTION && absolute_damping_)
+    if (parameters_ != STIFFNESS && absolute_damping_)
       error->all(FLERR,
                  "model tdem/lsd: 'absolute_damping on' is not allowed with 'parameters "
-                 "restitution' (allowed with parameters stiffness only)");
+                 "restitution' or 'parameters material' (allowed with parameters stiffness only)");
   }
 
   void connectToProperties(PropertyRegistry& registry) {
@@ -102,6 +107,37 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
           c.gamman = gn[i][j];
           c.gammat = tangential_damping_ ? gt[i][j] : 0.0;
         }
+    } else if (parameters_ == MATERIAL) {
+      double **yeff = nullptr, **e = nullptr, **kappa = nullptr;
+      registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff);
+      registry.registerProperty("charVel", &MODEL_PARAMS::createCharacteristicVelocity);
+      registry.registerProperty(tdem::liggghts::kPropRestitution, &tdem::liggghts::create_restitution);
+      registry.registerProperty(tdem::liggghts::kPropStiffnessRatio,
+                                &tdem::liggghts::create_stiffness_ratio);
+      registry.connect("Yeff", yeff, caller);
+      registry.connect("charVel", char_vel_, caller);
+      registry.connect(tdem::liggghts::kPropRestitution, e, caller);
+      registry.connect(tdem::liggghts::kPropStiffnessRatio, kappa, caller);
+      if (!(char_vel_ > 0.0)) {
+        char buf[256];
+        std::snprintf(buf, sizeof buf,
+                      "model tdem/lsd: characteristicVelocity %.17g must be > 0 (parameters material)",
+                      char_vel_);
+        error->all(FLERR, buf);
+      }
+      stiffness_per_mass_ = false;  // k, gamma, kt, gammat are formed per contact below
+      damping_per_mass_ = false;
+      for (int i = 1; i <= n; ++i)
+        for (int j = 1; j <= n; ++j) {
+          PairCoefficients& c = coef_(i, j);
+          c.kn = yeff[i][j];  // effective Young's modulus; k follows per contact
+          c.kt = kappa[i][j];
+          // zero overlap: gamma from ln e in the closed form; zero force: from the damping ratio
+          c.gamman = end_ == tdem::ContactEnd::zero_overlap
+                         ? std::log(e[i][j])
+                         : tdem::lsd::damping_ratio_from_restitution(e[i][j], end_);
+          c.gammat = tangential_damping_ ? 1.0 : 0.0;
+        }
     } else {
       double **e = nullptr, **tc = nullptr, **kappa = nullptr;
       registry.registerProperty(tdem::liggghts::kPropRestitution, &tdem::liggghts::create_restitution);
@@ -143,7 +179,16 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
     const double meff = sidata.meff;
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double kn = pc.kn, kt = pc.kt, gamman = pc.gamman, gammat = pc.gammat;
-    if (stiffness_per_mass_) {
+    if (parameters_ == MATERIAL) {
+      const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
+      const double k = tdem::lsd::stiffness_matching_hertz(pc.kn, reff, meff, char_vel_);
+      gamman = end_ == tdem::ContactEnd::zero_overlap
+                   ? tdem::lsd::damping_zero_overlap_from_log_restitution(pc.gamman, k, meff)
+                   : tdem::lsd::damping_from_ratio(pc.gamman, k, meff);
+      gammat = pc.gammat * gamman;
+      kn = k / force->nktv2p;  // pressure units -> force/distance, as the stock models
+      kt = pc.kt * kn;
+    } else if (stiffness_per_mass_) {
       kn = meff * kn;
       kt = meff * kt;
     }
@@ -199,6 +244,7 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
   bool stiffness_per_mass_ = false;
   bool damping_per_mass_ = true;
   tdem::ContactEnd end_ = tdem::ContactEnd::zero_overlap;
+  double char_vel_ = 0.0;  // characteristicVelocity (parameters material)
 };
 
 }  // namespace ContactModels

@@ -20,6 +20,15 @@ GOOD_STIFF = {
     "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
 }
 
+GOOD_MAT = {
+    "youngsModulus": "peratomtype 5e6 5e6",
+    "poissonsRatio": "peratomtype 0.3 0.3",
+    "characteristicVelocity": "scalar 1.0",
+    "coefficientRestitution": "peratomtypepair 2 0.8 0.8 0.8 0.8",
+    "tangentialStiffnessRatio": "peratomtypepair 2 1 1 1 1",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+
 
 def props(base, **changes):
     p = dict(base)
@@ -74,7 +83,7 @@ CASES = [
      [r"'model tdem/lsd tangential tdem/cundall_strack cohesion sjkr rolling_friction off surface default'",
       r"not compiled", r"compiled tdem combinations"]),
     ("parameters value", LSD + " parameters elastic", props(GOOD_STIFF), None,
-     [r"model tdem/lsd", r"keyword 'parameters'", r"'elastic'", r"allowed values: stiffness \| restitution"]),
+     [r"model tdem/lsd", r"keyword 'parameters'", r"'elastic'", r"allowed values: stiffness \| restitution \| material"]),
     ("limitForce value", LSD + " limitForce yes", props(GOOD_STIFF), None,
      [r"keyword 'limitForce'", r"'yes'", r"allowed values: off \| on"]),
     ("slip_rule value", LSD + " slip_rule dashpot", props(GOOD_STIFF), None,
@@ -110,6 +119,16 @@ CASES = [
     ("spring_dashpot with kt = 0", LSD, props(GOOD_STIFF, kt="peratomtypepair 2 0 0 0 0"),
      LSD + " primitive type 1 zplane 0.008 slip_rule spring_dashpot",
      [r"slip_rule spring_dashpot", r"kt > 0", r"kt = 0", r"types 1 1"]),
+    ("material mode without characteristicVelocity", LSD + " parameters material",
+     props(GOOD_MAT, characteristicVelocity=None), None, [r"characteristicVelocity"]),
+    ("material mode characteristicVelocity <= 0", LSD + " parameters material",
+     props(GOOD_MAT, characteristicVelocity="scalar -2"), None,
+     [r"characteristicVelocity", r">= 1e-2"]),  # LIGGGHTS's own range check of the property
+    ("material mode restitution > 1", LSD + " parameters material",
+     props(GOOD_MAT, coefficientRestitution="peratomtypepair 2 0.8 0.8 0.8 1.5"), None,
+     [r"coefficientRestitution", r"1\.5", r"types 2 2", r"\(0, 1\]"]),
+    ("absolute_damping with material", LSD + " parameters material absolute_damping on", props(GOOD_MAT), None,
+     [r"absolute_damping on", r"parameters material", r"allowed with parameters stiffness"]),
     ("negative friction", LSD, props(GOOD_STIFF, coefficientFriction="peratomtypepair 2 0.5 -0.5 -0.5 0.5"),
      None, [r"tangential tdem/cundall_strack", r"coefficientFriction", r"-0\.5", r">= 0"]),
 ]

@@ -19,6 +19,11 @@ STIFF_ABS_PROPS = S.STIFFNESS_PROPS.replace("gamman peratomtypepair 2 300 280 28
                                    .replace("gammat peratomtypepair 2 120 110 110 100",
                                             "gammat_abs peratomtypepair 2 0.012 0.011 0.011 0.010")
 
+# model hooke has kt = kn: tangentialStiffnessRatio 1
+MATERIAL_PROPS = S.HOOKE_PROPS + """
+fix m_kap all property/global tangentialStiffnessRatio peratomtypepair 2 1 1 1 1
+"""
+
 ROLL_PROPS = S.STIFFNESS_PROPS + """
 fix m_rmu all property/global coefficientRollingFriction peratomtypepair 2 0.1 0.12 0.12 0.15
 """
@@ -38,6 +43,9 @@ CASES = [
     ("hooke_cundall_strack_vs_hooke_history",
      "model hooke tangential history",
      "model hooke tangential tdem/cundall_strack", S.HOOKE_PROPS),
+    ("lsd_material_vs_hooke",
+     "model hooke tangential history",
+     "model tdem/lsd tangential tdem/cundall_strack parameters material", MATERIAL_PROPS),
     ("hertz_cundall_strack_vs_hertz_history",
      "model hertz tangential history",
      "model hertz tangential tdem/cundall_strack", S.HOOKE_PROPS),

@@ -126,7 +126,44 @@ fix m_gn all property/global gamman peratomtypepair 1 %.17g
 fix m_gt all property/global gammat peratomtypepair 1 0.0
 fix m_mu all property/global coefficientFriction peratomtypepair 1 0.5
 """ % (KN, KN * 0.2857, GN)
+    # material mode (configured like model hooke): k from Y*, R*, m* and the characteristic
+    # velocity; Y* is chosen so that the wall contact has the stiffness KN of stiffness mode.
+    NU, VC = 0.3, 1.0
+    Y = (KN ** 5 / ((16.0 / 15.0) ** 4 * R ** 2 * MASS * VC * VC)) ** 0.25
+    mat_props = """
+fix m_E  all property/global youngsModulus peratomtype %.17g
+fix m_nu all property/global poissonsRatio peratomtype %.17g
+fix m_vc all property/global characteristicVelocity scalar %.17g
+fix m_e  all property/global coefficientRestitution peratomtypepair 1 %.17g
+fix m_ka all property/global tangentialStiffnessRatio peratomtypepair 1 0.2857
+fix m_mu all property/global coefficientFriction peratomtypepair 1 0.5
+""" % (2.0 * (1.0 - NU * NU) * Y, NU, VC, E)
     rows = []
+    for geometry in ("wall", "pair"):
+        meff = MASS if geometry == "wall" else MASS / 2
+        reff = R if geometry == "wall" else R / 2
+        for limit in ("off", "on"):
+            zf = limit == "on"
+            name = "%s_material_limitForce_%s" % (geometry, limit)
+            k = 16.0 / 15.0 * math.sqrt(reff) * Y * (15.0 * meff * VC * VC / (16.0 * math.sqrt(reff) * Y)) ** 0.2
+            lo, hi = 0.0, 2.0 * math.sqrt(k * meff)   # damping giving e = E, by bisection
+            for _ in range(200):
+                mid = 0.5 * (lo + hi)
+                if closed_form(k, mid, meff, zf)[0] > E:
+                    lo = mid
+                else:
+                    hi = mid
+            e_ref, tc_ref = closed_form(k, 0.5 * (lo + hi), meff, zf)
+            d = T.workdir(args, "tdem_lig_impact_" + name)
+            T.run(args.tdem, scene(geometry, "parameters material limitForce " + limit, mat_props), d, name)
+            e, tc, n = measure(T.read_dump(os.path.join(d, "dump.impact")), geometry, zf)
+            err_e, err_tc = e / e_ref - 1, tc / tc_ref - 1
+            rows.append((name, e_ref, e, err_e, tc_ref, tc, err_tc))
+            checks.check(abs(e_ref / E - 1) < 1e-9, name + ": the derived damping gives e = %.6f" % E)
+            checks.check(abs(err_e) < TOL, "%s: e = %.6f, target %.6f, rel. error %.2e (< %g)"
+                         % (name, e, e_ref, err_e, TOL))
+            checks.check(abs(err_tc) < TOL, "%s: t_c = %.6e s, closed form %.6e s, rel. error %.2e (< %g)"
+                         % (name, tc, tc_ref, err_tc, TOL))
     for geometry in ("wall", "pair"):
         meff = MASS if geometry == "wall" else MASS / 2
         for limit in ("off", "on"):
