@@ -76,6 +76,11 @@ done
 
 (cd "$work" && ${TDEM_BENCH_WRAP:-} "$exe" -in in.bench -log log.bench -echo none > out.bench)
 awk '
+  function median(s,   m, a, i, j, t) {
+    m = ns[s]; for (i = 1; i <= m; i++) a[i] = v[s, i]
+    for (i = 2; i <= m; i++) { t = a[i]; j = i - 1; while (j >= 1 && a[j] > t) { a[j + 1] = a[j]; j-- } a[j + 1] = t }
+    return (m % 2) ? a[(m + 1) / 2] : (a[m / 2] + a[m / 2 + 1]) / 2
+  }
   /^bench-style/ { style = $2 }
   /^Loop time of/ { n++; t = $4; st = $9; at = $12; k[n] = style; wall[n] = t; ps[n] = at * st }
   /% CPU use with/ { cpu[n] = t * $1 / 100 }
@@ -83,12 +88,13 @@ awk '
     for (i = 1; i <= n; i++) {
       w = ps[i] / wall[i]; c = ps[i] / cpu[i];
       printf "run %d %-5s loop %.3f s (cpu %.3f s): %.4g particle-steps/s wall, %.4g per cpu-second\n", i, k[i], wall[i], cpu[i], w, c
+      ns[k[i]]++; v[k[i], ns[k[i]]] = w
       if (w > bw[k[i]]) bw[k[i]] = w
       if (c > bc[k[i]]) bc[k[i]] = c
     }
     printf "stock gran/hooke/history:         %.4g particle-steps/s (best wall), %.4g per cpu-s\n", bw["stock"], bc["stock"]
     printf "tdem/gran (lsd + cundall_strack): %.4g particle-steps/s (best wall), %.4g per cpu-s\n", bw["tdem"], bc["tdem"]
-    printf "ratio tdem/stock: %.3f (wall), %.3f (cpu)\n", bw["tdem"] / bw["stock"], bc["tdem"] / bc["stock"]
+    printf "ratio tdem/stock: %.3f (best wall), %.3f (best cpu), %.3f (median wall: %.4g vs %.4g)\n", bw["tdem"] / bw["stock"], bc["tdem"] / bc["stock"], median("tdem") / median("stock"), median("tdem"), median("stock")
   }' "$work/out.bench"
 # identical physics: the last thermo line of each stock run equals that of the next tdem run
 awk '$1 == "Step" { getline; getline; line[++n] = $0 }

@@ -1,0 +1,259 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""tdem showcase: the linear spring-dashpot + Cundall-Strack laws in LIGGGHTS and LAMMPS.
+
+1. Accuracy. A sphere hits a wall head-on, in both engines, with tdem's law given by the
+   coefficient of restitution e and the contact time t_c it should have, in both end-of-contact
+   conventions. The realised e and t_c are measured from the trajectory and compared with the
+   request. Next to it: stock LIGGGHTS `model hooke` with `limitForce on` (no attraction), which
+   derives its damping with the attraction-allowed formula, against tdem's `parameters material`
+   (the same stiffness rule, damping derived for the convention in use).
+2. A bed of spheres settles in a box, in each engine on 2 MPI ranks, with the tdem laws
+   (input_scripts/liggghts/in.tdem_lsd_box, input_scripts/lammps/in.tdem_settle).
+
+Writes build/showcase/impact.csv and impact.png and prints the tables.
+Usage: python3 tools/showcase.py [BUILD_DIR]
+"""
+import csv
+import math
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "build"))
+LIG = os.path.join(BUILD, "bin", "tdem-liggghts")
+LMP = os.path.join(BUILD, "bin", "tdem-lammps")
+OUT = os.path.join(BUILD, "showcase")
+MPIRUN = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2"]
+
+R, RHO, V0, TC = 0.005, 2500.0, 1.0, 1.0e-3
+MASS = RHO * 4.0 / 3.0 * math.pi * R ** 3
+STEPS_PER_CONTACT = 400
+DT = TC / STEPS_PER_CONTACT
+NSTEPS = 3 * STEPS_PER_CONTACT
+GAP = 0.2 * V0 * TC  # free flight before the touch
+
+LIG_IMPACT = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region box block -0.05 0.05 -0.05 0.05 -0.001 0.05 units box
+create_box 1 box
+neighbor 0.002 bin
+neigh_modify delay 0
+{props}
+fix m_mu all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran {model} {settings}
+pair_coeff * *
+timestep {dt!r}
+create_atoms 1 single 0.0 0.0 {z0!r} units box
+set group all diameter {d!r} density {rho!r}
+velocity all set 0.0 0.0 {v!r} units box
+fix wz all wall/gran {model} primitive type 1 zplane 0.0 {settings}
+fix integr all nve/sphere
+dump d all custom 1 dump.impact id z vz fz
+dump_modify d format "%d %.17g %.17g %.17g"
+thermo {n}
+run {n}
+"""
+
+LMP_IMPACT = """units si
+atom_style sphere
+boundary f f f
+newton off
+comm_modify vel yes
+region box block -0.05 0.05 -0.05 0.05 -0.001 0.05 units box
+create_box 1 box
+create_atoms 1 single 0 0 {z0!r} units box
+set atom 1 diameter {d!r} density {rho!r}
+velocity all set 0 0 {v!r} units box
+pair_style tdem/gran
+pair_coeff * * {law}
+fix wz all tdem/wall/gran {law} zplane 0 NULL
+fix nve all nve/sphere
+timestep {dt!r}
+dump d all custom 1 dump.impact id z vz fz
+dump_modify d format float %.17g
+thermo {n}
+run {n}
+"""
+
+
+def run(cmd, text, workdir, name):
+    path = os.path.join(workdir, name)
+    with open(path, "w") as f:
+        f.write(text)
+    t0 = time.time()
+    r = subprocess.run(cmd + ["-in", name, "-log", "none"], cwd=workdir, capture_output=True, text=True)
+    if r.returncode != 0:
+        sys.stderr.write(r.stdout[-3000:] + r.stderr[-3000:])
+        raise SystemExit("showcase: %s failed on %s" % (cmd[-1], name))
+    return r.stdout, time.time() - t0
+
+
+def measure(workdir):
+    """Realised e (final/initial normal velocity) and t_c (time with a non-zero wall force)."""
+    vz, fz = [], []
+    with open(os.path.join(workdir, "dump.impact")) as f:
+        lines = f.read().split("ITEM: TIMESTEP")[1:]
+    for block in lines:
+        row = block.strip().splitlines()[-1].split()
+        vz.append(float(row[2]))
+        fz.append(float(row[3]))
+    steps_in_contact = sum(1 for x in fz if x != 0.0)
+    return vz[-1] / -vz[0], steps_in_contact * DT
+
+
+def closed_form(k, gamma, meff, zero_force):
+    """(e, t_c) of the linear spring-dashpot; zero force end also in the over-damped range."""
+    w0, d = math.sqrt(k / meff), gamma / (2 * meff)
+    if d >= w0:
+        if not zero_force:
+            return 0.0, math.inf
+        s = math.sqrt(d * d - w0 * w0)
+        tc = 2 * math.atanh(s / d) / s if s > 0 else 2 / d
+        return math.exp(-d * tc), tc
+    w = math.sqrt(w0 * w0 - d * d)
+    if zero_force:
+        tc = 2 * math.atan2(w, d) / w
+        return math.exp(-d * tc), tc
+    return math.exp(-math.pi * d / w), math.pi / w
+
+
+def impacts(tmp):
+    rows = []
+    common = dict(dt=DT, z0=R + GAP, d=2 * R, rho=RHO, v=-V0, n=NSTEPS)
+    for e in (0.9, 0.7, 0.5, 0.3, 0.1):
+        for limit in (False, True):
+            conv = "zero force" if limit else "zero overlap"
+            # tdem, restitution mode, both hosts
+            props = ("fix m_e all property/global coefficientRestitution peratomtypepair 1 %r\n"
+                     "fix m_tc all property/global contactTime peratomtypepair 1 %r\n"
+                     "fix m_ka all property/global tangentialStiffnessRatio peratomtypepair 1 0.2857" % (e, TC))
+            w = tempfile.mkdtemp(dir=tmp)
+            run([LIG], LIG_IMPACT.format(props=props, model="model tdem/lsd tangential tdem/cundall_strack",
+                                         settings="parameters restitution limitForce " + ("on" if limit else "off"),
+                                         **common), w, "in.impact")
+            rows.append(("LIGGGHTS tdem/lsd restitution", conv, e, TC) + measure(w))
+            w = tempfile.mkdtemp(dir=tmp)
+            law = ("normal lsd restitution %r %r tangential cundall_strack 0.2857 0.5 limit_force %s"
+                   % (e, TC, "yes" if limit else "no"))
+            run([LMP], LMP_IMPACT.format(law=law, **common), w, "in.impact")
+            rows.append(("LAMMPS tdem/gran restitution", conv, e, TC) + measure(w))
+            # material data (Young's modulus, characteristic velocity) and e: stock hooke vs tdem
+            Y = 2.0e7
+            props = ("fix m_E all property/global youngsModulus peratomtype %r\n"
+                     "fix m_nu all property/global poissonsRatio peratomtype 0.3\n"
+                     "fix m_vc all property/global characteristicVelocity scalar 1.0\n"
+                     "fix m_e all property/global coefficientRestitution peratomtypepair 1 %r\n"
+                     "fix m_ka all property/global tangentialStiffnessRatio peratomtypepair 1 1.0" % (Y, e))
+            ystar = Y / (2 * (1 - 0.3 ** 2))
+            k = 16 / 15 * math.sqrt(R) * ystar * (15 * MASS / (16 * math.sqrt(R) * ystar)) ** 0.2
+            for label, model, settings in (
+                    ("LIGGGHTS stock hooke", "model hooke tangential history", ""),
+                    ("LIGGGHTS tdem/lsd material", "model tdem/lsd tangential tdem/cundall_strack",
+                     "parameters material")):
+                w = tempfile.mkdtemp(dir=tmp)
+                lf = "limitForce " + ("on" if limit else "off")
+                run([LIG], LIG_IMPACT.format(props=props, model=model, settings=(settings + " " + lf).strip(),
+                                             **common), w, "in.impact")
+                er, tcr = measure(w)
+                # the contact time the requested e should come with, for this stiffness
+                lo, hi = 0.0, 20 * math.sqrt(k * MASS)  # e(gamma) decreases monotonically
+                for _ in range(100):
+                    mid = (lo + hi) / 2
+                    lo, hi = (mid, hi) if closed_form(k, mid, MASS, limit)[0] > e else (lo, mid)
+                rows.append((label, conv, e, closed_form(k, lo, MASS, limit)[1], er, tcr))
+    return rows
+
+
+def plot(rows, path):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return False
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
+    for ax, conv in zip(axes, ("zero overlap", "zero force")):
+        ax.plot([0, 1], [0, 1], color="0.7", lw=1, label="requested")
+        for label, marker in (("LIGGGHTS tdem/lsd restitution", "o"), ("LAMMPS tdem/gran restitution", "x"),
+                              ("LIGGGHTS tdem/lsd material", "s"), ("LIGGGHTS stock hooke", "^")):
+            pts = [(r[2], r[4]) for r in rows if r[0] == label and r[1] == conv]
+            ax.plot([p[0] for p in pts], [p[1] for p in pts], marker, ls="none", mfc="none", label=label)
+        ax.set_xlabel("requested coefficient of restitution e")
+        ax.set_ylabel("realised e (sphere on a wall)")
+        ax.set_title("contact ends at %s" % conv)
+        ax.legend(fontsize=8)
+        ax.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    return True
+
+
+def _is_number(x):
+    try:
+        float(x)
+        return True
+    except ValueError:
+        return False
+
+
+def settle(tmp):
+    res = []
+    for host, exe, script in (("LIGGGHTS", LIG, "input_scripts/liggghts/in.tdem_lsd_box"),
+                              ("LAMMPS", LMP, "input_scripts/lammps/in.tdem_settle")):
+        w = tempfile.mkdtemp(dir=tmp)
+        shutil.copy(os.path.join(HERE, script), os.path.join(w, "in.scene"))
+        t0 = time.time()
+        r = subprocess.run(MPIRUN + [exe, "-in", "in.scene", "-log", "none"], cwd=w, capture_output=True, text=True)
+        if r.returncode != 0:
+            sys.stderr.write(r.stdout[-3000:] + r.stderr[-3000:])
+            raise SystemExit("showcase: %s failed" % script)
+        thermo = [l for l in r.stdout.splitlines() if l.split() and all(_is_number(x) for x in l.split())]
+        res.append((host, script, thermo[0], thermo[-1], time.time() - t0))
+    return res
+
+
+def main():
+    for exe in (LIG, LMP):
+        if not os.access(exe, os.X_OK):
+            raise SystemExit("showcase: %s not built (run tools/setup.sh)" % exe)
+    os.makedirs(OUT, exist_ok=True)
+    tmp = tempfile.mkdtemp(prefix="tdem_showcase_")
+    try:
+        print("== 1. Sphere on a wall, v0 = %g m/s, R = %g m, %d steps per contact ==" % (V0, R, STEPS_PER_CONTACT))
+        rows = impacts(tmp)
+        print("%-31s %-13s %6s %8s %8s %10s %10s %8s" % ("law", "contact end", "e req", "e real", "err e",
+                                                         "t_c req", "t_c real", "err t_c"))
+        for r in rows:
+            print("%-31s %-13s %6.2f %8.4f %+8.1e %10.4e %10.4e %+8.1e"
+                  % (r[0], r[1], r[2], r[4], r[4] / r[2] - 1, r[3], r[5], r[5] / r[3] - 1))
+        with open(os.path.join(OUT, "impact.csv"), "w", newline="") as f:
+            wr = csv.writer(f)
+            wr.writerow(["law", "contact_end", "e_requested", "tc_expected", "e_realised", "tc_realised"])
+            wr.writerows(rows)
+        worst = max(abs(r[4] / r[2] - 1) for r in rows if "stock" not in r[0])
+        stock = [r for r in rows if "stock" in r[0] and r[1] == "zero force"]
+        print("\ntdem laws: largest |e error| %.1e (time-step error, 1/%d of a contact)." % (worst, STEPS_PER_CONTACT))
+        print("stock hooke with limitForce on: requested e -> realised e: " +
+              ", ".join("%.2f -> %.3f" % (r[2], r[4]) for r in stock))
+        if plot(rows, os.path.join(OUT, "impact.png")):
+            print("plot: %s" % os.path.join(OUT, "impact.png"))
+        print("\n== 2. Settling beds with the tdem laws, mpirun -np 2 ==")
+        for host, script, first, last, secs in settle(tmp):
+            print("%-9s %-40s %5.1f s\n          first thermo: %s\n          last thermo:  %s"
+                  % (host, script, secs, first.strip(), last.strip()))
+        print("\nOutput in %s" % OUT)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
