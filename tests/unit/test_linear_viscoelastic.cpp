@@ -161,6 +161,24 @@ TEST(LinearViscoelastic, KernelForceValues) {
   EXPECT_EQ(r.damping, 30.0);
 }
 
+TEST(LinearViscoelastic, ForceOverDistanceIsTheSameLaw) {
+  const lsd::Coefficients<double> c{3e4, 7.0};
+  const double r = 0.0093, xi = 2e-5;
+  for (double vnnr : {-0.02, -1e-4, 0.0, 3e-4, 0.05}) {  // vnnr = v_rel . del, < 0 approaching
+    const tdem::NormalKinematics<double> kin{xi, -vnnr / r, 0.01, 1e-3};
+    for (ContactEnd end : {ContactEnd::zero_overlap, ContactEnd::zero_force}) {
+      const double f = lsd::force(end, c, kin).force;
+      const double ccel = end == ContactEnd::zero_force
+                              ? lsd::force_over_distance<ContactEnd::zero_force>(c, xi, vnnr, 1.0 / r, 1.0 / (r * r))
+                              : lsd::force_over_distance<ContactEnd::zero_overlap>(c, xi, vnnr, 1.0 / r, 1.0 / (r * r));
+      EXPECT_NEAR(ccel * r, f, 1e-14 * (std::fabs(f) + c.k * xi)) << to_string(end) << " vnnr=" << vnnr;
+      if (end == ContactEnd::zero_force) {
+        EXPECT_GE(ccel, 0.0);
+      }
+    }
+  }
+}
+
 TEST(LinearViscoelastic, StiffnessFromMaterialMatchesHertzOverlap) {
   // The undamped linear contact reaches xi_max = v sqrt(m/k); Hertz reaches
   // (5 m v^2 / (4 k_H))^(2/5), k_H = 4/3 E* sqrt(R*) (physics_reference 2.2.3).

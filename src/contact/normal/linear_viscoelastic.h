@@ -57,6 +57,20 @@ TDEM_KERNEL NormalResult<T> force(const Coefficients<T>& c, const NormalKinemati
   return {f, elastic, c.k, c.gamma};
 }
 
+// The same law for hosts that apply the normal force along the unnormalised centre vector
+// del = x_i - x_j (LAMMPS): returns F/r = k xi / r + gamma xi_dot / r with xi_dot = -vnnr / r,
+// vnnr = (v_i - v_j) . del, evaluated in the order LAMMPS's granular styles use, so that a
+// host adapter reproduces them bit for bit. Clipped at 0 for the zero-force end.
+template <ContactEnd End, class T>
+TDEM_KERNEL T force_over_distance(const Coefficients<T>& c, T overlap, T vnnr, T rinv,
+                                  T rsqinv) noexcept {
+  T ccel = c.k * overlap * rinv - c.gamma * vnnr * rsqinv;
+  if constexpr (End == ContactEnd::zero_force) {
+    if (ccel < T(0)) ccel = T(0);
+  }
+  return ccel;
+}
+
 template <class T>
 inline NormalResult<T> force(ContactEnd end, const Coefficients<T>& c,
                              const NormalKinematics<T>& kin) noexcept {

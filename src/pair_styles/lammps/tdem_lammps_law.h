@@ -9,9 +9,9 @@
 // Rounding order. LAMMPS gran/hooke/history forms the normal "force over distance"
 //   ccel = kn*(radsum - r)*rinv - (meff*gamman*vnnr)*rsqinv
 // while tdem::lsd::force forms F = gamma*xi_dot + k*xi. To reproduce the stock style bit for
-// bit, the adapter takes the kernel's separate pieces (NormalResult::elastic = k*xi and
-// NormalResult::damping = gamma) and combines them in LAMMPS's order (lsd_force_over_distance
-// below); the zero_force clip is applied to ccel exactly where LAMMPS applies limit_damping.
+// bit, the adapter uses the kernel's force-over-distance form (tdem::lsd::force_over_distance),
+// which evaluates the same law in LAMMPS's order; the zero_force clip is applied to ccel exactly
+// where LAMMPS applies limit_damping.
 #pragma once
 
 #include "contact/normal/linear_viscoelastic.h"
@@ -69,18 +69,6 @@ void derive_law(LAMMPS_NS::LAMMPS *lmp, const std::string &where, LawCoeffs &c);
 std::string describe_law(const LawCoeffs &c);
 
 // ------------------------------------------------------------------- per-contact evaluation
-// LAMMPS-order combination of the lsd kernel's pieces (proposed for src/contact as
-// tdem::lsd::force_over_distance): ccel = F/r with F = k xi + gamma xi_dot, xi_dot = -vnnr/r.
-template <tdem::ContactEnd End>
-inline double lsd_force_over_distance(const tdem::NormalResult<double> &res, double vnnr,
-                                      double rinv, double rsqinv) {
-  double ccel = res.elastic * rinv - res.damping * vnnr * rsqinv;
-  if constexpr (End == tdem::ContactEnd::zero_force) {
-    if (ccel < 0.0) ccel = 0.0;
-  }
-  return ccel;
-}
-
 // One contact. del = x_i - x_j (or sphere centre minus wall point), overlap = radsum - r,
 // vr = relative translational velocity v_i - v_j, wr = relative rotational term
 // (rad_i w_i + rad_j w_j)/r. Writes ccel (normal force over r, along del) and the tangential
@@ -125,15 +113,11 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     tp.gammat = 0.0;
   }
 
-  // normal law
-  const tdem::NormalKinematics<double> nk{overlap, -vnnr * rinv, meff, 0.0};
-  if (end) {
-    const auto res = tdem::lsd::force<tdem::ContactEnd::zero_force>(nc, nk);
-    ccel = lsd_force_over_distance<tdem::ContactEnd::zero_force>(res, vnnr, rinv, rsqinv);
-  } else {
-    const auto res = tdem::lsd::force<tdem::ContactEnd::zero_overlap>(nc, nk);
-    ccel = lsd_force_over_distance<tdem::ContactEnd::zero_overlap>(res, vnnr, rinv, rsqinv);
-  }
+  // normal law, as force over distance (LAMMPS applies it along del)
+  if (end)
+    ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_force>(nc, overlap, vnnr, rinv, rsqinv);
+  else
+    ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_overlap>(nc, overlap, vnnr, rinv, rsqinv);
 
   // relative velocity of the contact point
   tdem::cundall_strack::Kinematics<double> tk;
