@@ -9,7 +9,10 @@
 # processes on a shared machine).
 # The thermo output of the two styles is also compared (identical physics => identical lines).
 #
-# usage: bench/lammps/bench_linear.sh [BUILD_DIR] [STEPS] [REPEATS]
+# With CALLGRIND=1 it also counts instructions (valgrind --tool=callgrind, CALLGRIND_STEPS=50
+# steps of each style in its own process): total and inside the pair style's compute(), a
+# measure that other load on the machine does not disturb.
+# usage: [CALLGRIND=1] bench/lammps/bench_linear.sh [BUILD_DIR] [STEPS] [REPEATS]
 #   BUILD_DIR  default build (tdem-lammps is BUILD_DIR/bin/tdem-lammps)
 #   needs data.chute: from $TDEM_LAMMPS_SOURCE/bench (default: /opt/tdem-deps/lammps-*/bench
 #   or /var/cache/tdem/lammps-*/bench)
@@ -100,3 +103,21 @@ awk '
 awk '$1 == "Step" { getline; getline; line[++n] = $0 }
      END { same = 1; for (i = 2; i <= n; i++) if (line[i] != line[1]) same = 0;
            print (same ? "thermo after every run: identical for stock and tdem" : "thermo after the runs: DIFFERENT") }' "$work/out.bench"
+
+if [ -n "${CALLGRIND:-}" ]; then
+  timed_steps=$steps
+  steps=${CALLGRIND_STEPS:-50}
+  for m in stock tdem; do
+    if [ $m = stock ]; then scene stock "$stock" > "$work/cg.in.$m"; else scene tdem "$tdem" > "$work/cg.in.$m"; fi
+    (cd "$work" && valgrind --tool=callgrind --callgrind-out-file=cg.$m "$exe" -in cg.in.$m -log none \
+       -echo none -screen none > cg.$m.txt 2>&1)
+    total=$(grep 'Collected' "$work/cg.$m.txt" | awk '{print $4}')
+    pair=$(callgrind_annotate --inclusive=yes "$work/cg.$m" 2>/dev/null |
+           grep -E 'PairGranHookeHistory::compute\(|PairTDEMGran::compute\(' | head -1 | awk '{gsub(",","",$1); print $1}')
+    echo "$m $total $pair" >> "$work/cg.summary"
+  done
+  steps=$timed_steps
+  awk -v n="${CALLGRIND_STEPS:-50}" '{t[$1]=$2; p[$1]=$3} END{
+    printf "callgrind, %d steps: instructions total stock %.4g, tdem %.4g, ratio %.4f\n", n, t["stock"], t["tdem"], t["tdem"]/t["stock"];
+    printf "callgrind, %d steps: instructions in pair compute() stock %.4g, tdem %.4g, ratio %.4f\n", n, p["stock"], p["tdem"], p["tdem"]/p["stock"] }' "$work/cg.summary"
+fi
