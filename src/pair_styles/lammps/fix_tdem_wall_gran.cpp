@@ -50,6 +50,7 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
   dt = update->dt;
 
   int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
+  size_history = tdem_lammps::history_size(law.mode);  // 3, or 4 with walton_braun (xi_max)
 
   // wall geometry
   if (iarg >= narg)
@@ -269,6 +270,7 @@ template <int M, int E, int S> __attribute__((flatten, noinline)) void FixTDEMWa
     double *shear = history_one[i];
     if (rsq > rad * rad) {
       shear[0] = shear[1] = shear[2] = 0.0;
+      for (int m = tdem_lammps::TANGENTIAL_HISTORY; m < size_history; m++) shear[m] = 0.0;
       continue;
     }
 
@@ -288,7 +290,7 @@ template <int M, int E, int S> __attribute__((flatten, noinline)) void FixTDEMWa
     double ccel, fs[3];
     tdem_lammps::evaluate_contact<M, E, S>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
                                            vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
-                                           ccel, fs);
+                                           ccel, fs, rad, 0.0);
 
     f[i][0] += dx * ccel + fs[0];
     f[i][1] += dy * ccel + fs[1];

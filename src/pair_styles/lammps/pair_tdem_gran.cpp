@@ -3,7 +3,8 @@
 //
 // Bookkeeping follows the LAMMPS conventions for granular pair styles with history: a
 // FixNeighHistory stores 3 values (the tangential spring elongation) per neighbour with a
-// touch flag, the pair asks for a size neighbour list with history, meff uses fix freeze and
+// touch flag (4 or 5 when a type pair uses walton_braun or thornton: xi_max, f_max), the
+// pair asks for a size neighbour list with history, meff uses fix freeze and
 // fix rigid body masses, and the cutoff is the sum of the largest radii (including particles
 // a fix pour / fix deposit will insert).
 
@@ -42,7 +43,8 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   restartinfo = 1;
   size_history = tdem::cundall_strack::history_size;
   comm_forward = 1;               // rigid body masses
-  nondefault_history_transfer = 0;  // history[j][i] = -history[i][j] (shear flips sign)
+  nondefault_history_transfer = 0;  // history[j][i] = -history[i][j] (shear flips sign);
+                                    // 1 with walton_braun/thornton (init_style)
 
   onerad_dynamic = onerad_frozen = maxrad_dynamic = maxrad_frozen = nullptr;
   uniform = true;
@@ -113,7 +115,9 @@ void PairTDEMGran::compute(int eflag, int vflag)
     comm->forward_comm_pair(this);
   }
 
-  tdem_lammps::dispatch(uniform, umode, uend, uslip, PairRunner{this, eflag, vflag});
+  // compile-time paths only with the 3-value (tangential spring) history
+  tdem_lammps::dispatch(uniform && size_history == tdem_lammps::TANGENTIAL_HISTORY, umode, uend,
+                        uslip, PairRunner{this, eflag, vflag});
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -139,6 +143,8 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   const int newton_pair = force->newton_pair;
   const int ntp1 = atom_ntypes + 1;
   const LawCoeffs *lawtab = law.data();
+  // history values per neighbour: 3 on the compile-time (lsd) paths, else size_history
+  const int hsize = M >= 0 ? tdem_lammps::TANGENTIAL_HISTORY : size_history;
 
   const int inum = list->inum;
   int *ilist = list->ilist;
@@ -169,7 +175,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       const double rsq = delx * delx + dely * dely + delz * delz;
       const double radj = radius[j];
       const double radsum = radi + radj;
-      double *shear = &allshear[3 * jj];
+      double *shear = &allshear[hsize * jj];
 
       if (rsq >= radsum * radsum) {
         // not touching: forget the history
@@ -177,6 +183,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         shear[0] = 0.0;
         shear[1] = 0.0;
         shear[2] = 0.0;
+        for (int m = tdem_lammps::TANGENTIAL_HISTORY; m < hsize; m++) shear[m] = 0.0;
         continue;
       }
 
@@ -207,7 +214,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       double ccel, fs[3];
       tdem_lammps::evaluate_contact<M, E, S>(lawrow[type[j]], meff, delx, dely, delz, r, rinv,
                                              rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3,
-                                             dt, shearupdate, shear, ccel, fs);
+                                             dt, shearupdate, shear, ccel, fs, radi, radj);
 
       // forces and torques
       const double fx = delx * ccel + fs[0];
@@ -318,6 +325,23 @@ void PairTDEMGran::init_style()
 
   dt = update->dt;
 
+  // history values per neighbour: 3 (tangential spring) + the largest normal-law need
+  int need_history = tdem_lammps::TANGENTIAL_HISTORY;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j]) need_history = MAX(need_history, tdem_lammps::history_size(coeffs(i, j).mode));
+  if (fix_history == nullptr)
+    size_history = need_history;
+  else if (need_history != size_history)
+    error->all(FLERR,
+               "pair tdem/gran: the pair_coeff laws now need " + std::to_string(need_history) +
+                   " history values per contact, but the history was created with " +
+                   std::to_string(size_history) +
+                   "; changing between laws with and without history (walton_braun) after a "
+                   "run is not supported (use clear, or define walton_braun from the start)");
+  // the tangential spring flips sign with the pair order, xi_max does not
+  nondefault_history_transfer = size_history > tdem_lammps::TANGENTIAL_HISTORY ? 1 : 0;
+
   // on first init replace the placeholder with the FixNeighHistory that stores the history
   if (fix_history == nullptr) {
     const std::string cmd = id_history + " all NEIGH_HISTORY " + std::to_string(size_history);
@@ -387,7 +411,31 @@ void PairTDEMGran::init_style()
 double PairTDEMGran::init_one(int i, int j)
 {
   if (!allocated) allocate();
-  if (!setflag[i][j])
+  if (!setflag[i][j] && setflag[i][i] && setflag[j][j] &&
+      (coeffs(i, i).mode == tdem_lammps::MODE_HERTZ ||
+       coeffs(i, i).mode == tdem_lammps::MODE_THORNTON) &&
+      coeffs(j, j).mode == coeffs(i, i).mode) {
+    // normal hertz mixes the materials: 1/E* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j, with the
+    // material of type I from pair_coeff I I and of type J from pair_coeff J J; everything
+    // else (damping, tangential law, options) must agree
+    const LawCoeffs &a = coeffs(i, i), &b = coeffs(j, j);
+    if (a.hdamp != b.hdamp || a.hgamma != b.hgamma || a.htheta != b.htheta || a.he != b.he ||
+        a.th_py != b.th_py ||
+        a.kappa != b.kappa || a.mu != b.mu || a.end != b.end || a.slip != b.slip)
+      error->all(FLERR,
+                 "pair tdem/gran: no pair_coeff for type pair " + std::to_string(i) + " " +
+                     std::to_string(j) +
+                     " and the normal hertz/thornton laws of types I I and J J differ in more "
+                     "than the material "
+                     "(E, NU); set this type pair");
+    LawCoeffs c = a;
+    c.E2 = b.E1;
+    c.nu2 = b.nu1;
+    tdem_lammps::derive_law(lmp, "pair tdem/gran (mixing types " + std::to_string(i) + " " +
+                                     std::to_string(j) + ")", c);
+    coeffs(i, j) = c;
+    coeffs(j, i) = c;
+  } else if (!setflag[i][j])
     error->all(FLERR,
                "pair tdem/gran: no pair_coeff for type pair " + std::to_string(i) + " " +
                    std::to_string(j) + " (this style has no mixing rule; set every type pair)");
@@ -442,17 +490,15 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
   if (mask[j] & freeze_group_bit) meff = mi;
 
   // the stored history of this pair (searched from the previous hit); a copy, not updated
-  double shear[3] = {0.0, 0.0, 0.0};
+  double shear[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const int jnum = list->numneigh[i];
   int *jlist = list->firstneigh[i];
   for (int jj = 0; jj < jnum; jj++) {
     neighprev++;
     if (neighprev >= jnum) neighprev = 0;
     if ((jlist[neighprev] & NEIGHMASK) == j) {
-      const double *h = &fix_history->firstvalue[i][3 * neighprev];
-      shear[0] = h[0];
-      shear[1] = h[1];
-      shear[2] = h[2];
+      const double *h = &fix_history->firstvalue[i][size_history * neighprev];
+      for (int m = 0; m < size_history && m < 8; m++) shear[m] = h[m];
       break;
     }
   }
@@ -460,7 +506,7 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
   double ccel, fs[3];
   tdem_lammps::evaluate_contact<-1, -1, -1>(coeffs(itype, jtype), meff, delx, dely, delz, r, rinv,
                                             rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3, dt,
-                                            false, shear, ccel, fs);
+                                            false, shear, ccel, fs, radi, radj);
   fforce = ccel;
   const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
   svector[0] = fs[0];
@@ -480,7 +526,7 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 1;
+  const int version = 2;
   fwrite(&version, sizeof(int), 1, fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
@@ -496,9 +542,9 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version != 1)
+  if (version != 2)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads version 1)");
+                          " cannot be read (this build reads version 2)");
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
@@ -514,6 +560,14 @@ void PairTDEMGran::read_restart(FILE *fp)
 }
 
 /* ---------------------------------------------------------------------- */
+
+// history of j-i from that of i-j: the tangential spring flips sign, the normal-law slots
+// (xi_max of walton_braun) do not. Used by FixNeighHistory when nondefault_history_transfer.
+void PairTDEMGran::transfer_history(double *source, double *target)
+{
+  for (int m = 0; m < tdem_lammps::TANGENTIAL_HISTORY; m++) target[m] = -source[m];
+  for (int m = tdem_lammps::TANGENTIAL_HISTORY; m < size_history; m++) target[m] = source[m];
+}
 
 void PairTDEMGran::reset_dt()
 {

@@ -5,7 +5,11 @@
 //   pair_style tdem/gran
 //   pair_coeff I J normal lsd stiffness KN GAMMAN tangential cundall_strack KT GAMMAT MU [options]
 //   pair_coeff I J normal lsd restitution E TC tangential cundall_strack KAPPA MU [options]
-//   options: damping mass|absolute, limit_force no|yes, slip spring_dashpot|spring
+//   pair_coeff I J normal hertz E NU [E2 NU2] [damping linear G|kuwabara_kono G|tsuji E|general TH C]
+//                  tangential cundall_strack KAPPA MU [options]
+//   pair_coeff I J normal walton_braun KL KUL [S] tangential cundall_strack KAPPA MU [options]
+//   pair_coeff I J normal thornton E NU [E2 NU2] PY tangential cundall_strack KAPPA MU [options]
+//   options: damping mass|absolute (lsd stiffness), limit_force no|yes, slip spring_dashpot|spring
 //
 // Derives from Pair and uses only FixNeighHistory and NeighRequest (not the GRANULAR classes),
 // so the two files can be dropped into a LAMMPS src/ tree together with tdem_lammps_law.*,
@@ -40,6 +44,7 @@ class PairTDEMGran : public Pair {
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
   void reset_dt() override;
+  void transfer_history(double *, double *) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;

@@ -66,6 +66,85 @@ void non_negative(LAMMPS *lmp, const std::string &where, const std::string &name
   if (!(v >= 0.0)) fail(lmp, where, name + " = " + num(v) + " must be >= 0");
 }
 
+double poisson(LAMMPS *lmp, const std::string &where, const std::string &name, const char *text) {
+  const double nu = number(lmp, where, name, text);
+  if (!(nu > -1.0 && nu <= 0.5))
+    fail(lmp, where, name + " = " + num(nu) + " is outside the allowed range (-1, 0.5]");
+  return nu;
+}
+
+// normal hertz E NU [E2 NU2] [damping linear GAMMA | kuwabara_kono GAMMA | tsuji E |
+//                             general THETA C]
+int parse_hertz(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
+                LawCoeffs &c) {
+  c.mode = MODE_HERTZ;
+  const int n = available(narg, arg, iarg);
+  if (n != 2 && n != 4)
+    fail(lmp, where,
+         "normal hertz needs 2 values (E NU: both partners of one material) or 4 values "
+         "(E1 NU1 E2 NU2), got " + std::to_string(n));
+  c.E1 = number(lmp, where, "normal hertz E", arg[iarg]);
+  positive(lmp, where, "normal hertz E (Young's modulus)", c.E1);
+  c.nu1 = poisson(lmp, where, "normal hertz NU (Poisson ratio)", arg[iarg + 1]);
+  if (n == 4) {
+    c.E2 = number(lmp, where, "normal hertz E2", arg[iarg + 2]);
+    positive(lmp, where, "normal hertz E2 (Young's modulus)", c.E2);
+    c.nu2 = poisson(lmp, where, "normal hertz NU2 (Poisson ratio)", arg[iarg + 3]);
+  } else {
+    c.E2 = c.E1;
+    c.nu2 = c.nu1;
+  }
+  iarg += n;
+  c.hdamp = HDAMP_LINEAR;
+  c.hgamma = 0.0;
+  if (iarg < narg && strcmp(arg[iarg], "damping") == 0) {
+    if (iarg + 1 >= narg)
+      fail(lmp, where,
+           "normal hertz damping needs a member; allowed: linear GAMMA, kuwabara_kono GAMMA, "
+           "tsuji E, general THETA C");
+    const std::string d = arg[iarg + 1];
+    iarg += 2;
+    const int have = available(narg, arg, iarg);
+    if (d == "linear" || d == "kuwabara_kono") {
+      need(lmp, where, "normal hertz damping " + d, "GAMMA", have, 1);
+      if (have > 1)
+        fail(lmp, where, "normal hertz damping " + d + " takes 1 value (GAMMA), got " +
+                             std::to_string(have));
+      c.hdamp = d == "linear" ? HDAMP_LINEAR : HDAMP_KK;
+      c.hgamma = number(lmp, where, "normal hertz damping " + d + " GAMMA", arg[iarg]);
+      non_negative(lmp, where, "normal hertz damping " + d + " GAMMA", c.hgamma);
+      iarg += 1;
+    } else if (d == "tsuji") {
+      need(lmp, where, "normal hertz damping tsuji", "E (restitution)", have, 1);
+      if (have > 1)
+        fail(lmp, where, "normal hertz damping tsuji takes 1 value (E), got " +
+                             std::to_string(have));
+      c.hdamp = HDAMP_TSUJI;
+      c.he = number(lmp, where, "normal hertz damping tsuji E", arg[iarg]);
+      if (!(c.he > 0.0 && c.he <= 1.0))
+        fail(lmp, where,
+             "normal hertz damping tsuji E = " + num(c.he) + " is outside the allowed range (0, 1]");
+      iarg += 1;
+    } else if (d == "general") {
+      need(lmp, where, "normal hertz damping general", "THETA C", have, 2);
+      if (have > 2)
+        fail(lmp, where, "normal hertz damping general takes 2 values (THETA C), got " +
+                             std::to_string(have));
+      c.hdamp = HDAMP_GENERAL;
+      c.htheta = number(lmp, where, "normal hertz damping general THETA", arg[iarg]);
+      c.hgamma = number(lmp, where, "normal hertz damping general C", arg[iarg + 1]);
+      non_negative(lmp, where, "normal hertz damping general THETA", c.htheta);
+      non_negative(lmp, where, "normal hertz damping general C", c.hgamma);
+      iarg += 2;
+    } else {
+      fail(lmp, where,
+           "normal hertz damping '" + d +
+               "' is unknown; allowed: linear GAMMA, kuwabara_kono GAMMA, tsuji E, general THETA C");
+    }
+  }
+  return iarg;
+}
+
 }  // namespace
 
 int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
@@ -73,14 +152,58 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   c = LawCoeffs();
   bool damping_given = false;
 
-  // ---- normal lsd stiffness KN GAMMAN | normal lsd restitution E TC
+  // ---- normal lsd stiffness KN GAMMAN | normal lsd restitution E TC | normal hertz ...
   if (iarg >= narg || strcmp(arg[iarg], "normal") != 0)
     fail(lmp, where,
-         std::string("expected 'normal lsd ...' first, got '") +
+         std::string("expected 'normal lsd|hertz|walton_braun|thornton ...' first, got '") +
              (iarg < narg ? arg[iarg] : "end of line") + "'");
-  if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: lsd");
-  if (strcmp(arg[iarg + 1], "lsd") != 0)
-    fail(lmp, where, std::string("normal law '") + arg[iarg + 1] + "' is unknown; allowed: lsd");
+  if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: lsd, hertz, walton_braun, thornton");
+  if (strcmp(arg[iarg + 1], "hertz") == 0) {
+    iarg = parse_hertz(lmp, where, narg, arg, iarg + 2, c);
+  } else if (strcmp(arg[iarg + 1], "walton_braun") == 0) {
+    iarg += 2;
+    const int n = available(narg, arg, iarg);
+    if (n != 2 && n != 3)
+      fail(lmp, where,
+           "normal walton_braun needs 2 or 3 values (KL KUL [S]), got " + std::to_string(n));
+    c.mode = MODE_WALTON_BRAUN;
+    c.wb_kl = number(lmp, where, "normal walton_braun KL", arg[iarg]);
+    c.wb_ku = number(lmp, where, "normal walton_braun KUL", arg[iarg + 1]);
+    if (n == 3) c.wb_s = number(lmp, where, "normal walton_braun S", arg[iarg + 2]);
+    positive(lmp, where, "normal walton_braun KL (loading stiffness)", c.wb_kl);
+    if (!(c.wb_ku >= c.wb_kl))
+      fail(lmp, where,
+           "normal walton_braun KUL (unloading stiffness) = " + num(c.wb_ku) +
+               " is outside the allowed range [KL, inf) = [" + num(c.wb_kl) + ", inf)");
+    non_negative(lmp, where, "normal walton_braun S (slope of KUL with F_max)", c.wb_s);
+    iarg += n;
+  } else if (strcmp(arg[iarg + 1], "thornton") == 0) {
+    iarg += 2;
+    const int n = available(narg, arg, iarg);
+    if (n != 3 && n != 5)
+      fail(lmp, where,
+           "normal thornton needs 3 values (E NU PY: both partners of one material) or 5 values "
+           "(E1 NU1 E2 NU2 PY), got " + std::to_string(n));
+    c.mode = MODE_THORNTON;
+    c.E1 = number(lmp, where, "normal thornton E", arg[iarg]);
+    positive(lmp, where, "normal thornton E (Young's modulus)", c.E1);
+    c.nu1 = poisson(lmp, where, "normal thornton NU (Poisson ratio)", arg[iarg + 1]);
+    if (n == 5) {
+      c.E2 = number(lmp, where, "normal thornton E2", arg[iarg + 2]);
+      positive(lmp, where, "normal thornton E2 (Young's modulus)", c.E2);
+      c.nu2 = poisson(lmp, where, "normal thornton NU2 (Poisson ratio)", arg[iarg + 3]);
+    } else {
+      c.E2 = c.E1;
+      c.nu2 = c.nu1;
+    }
+    c.th_py = number(lmp, where, "normal thornton PY", arg[iarg + n - 1]);
+    positive(lmp, where, "normal thornton PY (limiting contact pressure)", c.th_py);
+    iarg += n;
+  } else if (strcmp(arg[iarg + 1], "lsd") != 0) {
+    fail(lmp, where,
+         std::string("normal law '") + arg[iarg + 1] +
+             "' is unknown; allowed: lsd, hertz, walton_braun, thornton");
+  } else {
   if (iarg + 2 >= narg)
     fail(lmp, where,
          "normal lsd needs a parametrisation; allowed: 'stiffness KN GAMMAN' or "
@@ -110,6 +233,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
          "normal lsd parametrisation '" + par +
              "' is unknown; allowed: 'stiffness KN GAMMAN' or 'restitution E TC'");
   }
+  }
 
   // ---- tangential cundall_strack KT GAMMAT MU | tangential cundall_strack KAPPA MU
   if (iarg >= narg || strcmp(arg[iarg], "tangential") != 0)
@@ -122,8 +246,16 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
     fail(lmp, where,
          std::string("tangential law '") + arg[iarg + 1] + "' is unknown; allowed: cundall_strack");
   iarg += 2;
-  if (c.mode == MODE_RESTITUTION) {
-    need(lmp, where, "tangential cundall_strack (with normal lsd restitution)", "KAPPA MU",
+  if (c.mode == MODE_RESTITUTION || c.mode == MODE_HERTZ || c.mode == MODE_WALTON_BRAUN ||
+      c.mode == MODE_THORNTON) {
+    need(lmp, where,
+         std::string("tangential cundall_strack (with normal ") +
+             (c.mode == MODE_HERTZ            ? "hertz"
+              : c.mode == MODE_WALTON_BRAUN ? "walton_braun"
+              : c.mode == MODE_THORNTON     ? "thornton"
+                                            : "lsd restitution") +
+             ")",
+         "KAPPA MU",
          available(narg, arg, iarg), 2);
     c.kappa = number(lmp, where, "tangential cundall_strack KAPPA", arg[iarg]);
     c.mu = number(lmp, where, "tangential cundall_strack MU", arg[iarg + 1]);
@@ -149,6 +281,14 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       if (iarg + 1 >= narg)
         fail(lmp, where, "keyword 'damping' needs a value; allowed: mass, absolute");
       const std::string v = arg[iarg + 1];
+      if (c.mode == MODE_WALTON_BRAUN || c.mode == MODE_THORNTON)
+        fail(lmp, where, "keyword 'damping " + v + "' applies to 'normal lsd stiffness' only "
+                         "(normal walton_braun and thornton have no damping)");
+      if (c.mode == MODE_HERTZ)
+        fail(lmp, where,
+             "keyword 'damping " + v +
+                 "' after the tangential law applies to 'normal lsd stiffness' only; for normal "
+                 "hertz write 'damping linear|kuwabara_kono|tsuji|general ...' right after E NU");
       if (c.mode == MODE_RESTITUTION)
         fail(lmp, where,
              "keyword 'damping " + v +
@@ -188,6 +328,25 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
 }
 
 void derive_law(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
+  if (c.mode == MODE_THORNTON) {
+    try {
+      c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
+    } catch (const std::exception &ex) {
+      fail(lmp, where, std::string("normal thornton: ") + ex.what());
+    }
+    return;
+  }
+  if (c.mode == MODE_HERTZ) {
+    try {
+      c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
+      if (c.hdamp == HDAMP_TSUJI) c.hgamma = tdem::hertz::tsuji_alpha_from_restitution(c.he, contact_end(c.end));
+    } catch (const std::exception &ex) {
+      fail(lmp, where, std::string("normal hertz: ") + ex.what());
+    }
+    if (!(c.estar > 0.0) || !std::isfinite(c.estar) || !(c.hgamma >= 0.0) || !std::isfinite(c.hgamma))
+      fail(lmp, where, "normal hertz: the parameters give no finite E* and damping");
+    return;
+  }
   if (c.mode != MODE_RESTITUTION) return;
   try {
     const auto rates = tdem::lsd::rates_from_restitution_and_time(c.e, c.tc, contact_end(c.end));
@@ -205,7 +364,22 @@ void derive_law(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
 
 std::string describe_law(const LawCoeffs &c) {
   std::string s = "normal lsd ";
-  if (c.mode == MODE_RESTITUTION) {
+  if (c.mode == MODE_THORNTON) {
+    s = "normal thornton E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
+        " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") py=" + num(c.th_py) +
+        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa 2 E* a) mu=" + num(c.mu);
+  } else if (c.mode == MODE_WALTON_BRAUN) {
+    s = "normal walton_braun kl=" + num(c.wb_kl) + " ku=" + num(c.wb_ku) + " s=" + num(c.wb_s) +
+        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa kl) mu=" + num(c.mu);
+  } else if (c.mode == MODE_HERTZ) {
+    static const char *const dn[] = {"linear", "kuwabara_kono", "tsuji", "general"};
+    s = "normal hertz E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
+        " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") damping " + dn[c.hdamp & 3];
+    if (c.hdamp == HDAMP_TSUJI) s += " e=" + num(c.he) + " (alpha=" + num(c.hgamma) + ")";
+    else if (c.hdamp == HDAMP_GENERAL) s += " theta=" + num(c.htheta) + " c=" + num(c.hgamma);
+    else s += " gamma=" + num(c.hgamma);
+    s += " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa 2 E* a) mu=" + num(c.mu);
+  } else if (c.mode == MODE_RESTITUTION) {
     s += "restitution e=" + num(c.e) + " tc=" + num(c.tc) + " (k/m*=" + num(c.k_per_mass) +
          " gamma/m*=" + num(c.gamma_per_mass) + ") tangential cundall_strack kappa=" +
          num(c.kappa) + " mu=" + num(c.mu);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: the linear spring-dashpot normal law (tdem::lsd) with the Cundall-Strack
-// tangential law (tdem::cundall_strack), as used by pair tdem/gran and fix tdem/wall/gran.
+// tdem for LAMMPS: the normal laws lsd (tdem::lsd), hertz (tdem::hertz), walton_braun and
+// thornton with the Cundall-Strack tangential law (tdem::cundall_strack), as used by pair
+// tdem/gran and fix tdem/wall/gran. The lsd modes run on compile-time specialised paths
+// (M = LawMode 0..2); hertz, walton_braun and thornton on the run-time path (M = -1).
 //
 // This header is host-specific glue: it holds the per-type-pair coefficients, the argument
 // parser shared by pair_coeff and the wall fix (tdem_lammps_law.cpp), and the per-contact
@@ -14,7 +16,10 @@
 // where LAMMPS applies limit_damping.
 #pragma once
 
+#include "contact/normal/hertz_damped.h"
 #include "contact/normal/linear_viscoelastic.h"
+#include "contact/normal/thornton.h"
+#include "contact/normal/walton_braun.h"
 #include "contact/tangential/cundall_strack.h"
 
 #include <cmath>
@@ -30,8 +35,31 @@ namespace tdem_lammps {
 enum LawMode : int {
   MODE_STIFFNESS_MASS = 0,  // k = KN, gamma = m* GAMMAN   (gran/hooke/history, GAMMAN in 1/time)
   MODE_STIFFNESS_ABS = 1,   // k = KN, gamma = GAMMAN      (GAMMAN in mass/time)
-  MODE_RESTITUTION = 2      // k = m* omega0^2, gamma = m* 2 delta from (e, t_c); kt = KAPPA k
+  MODE_RESTITUTION = 2,     // k = m* omega0^2, gamma = m* 2 delta from (e, t_c); kt = KAPPA k
+  MODE_HERTZ = 3,           // normal hertz: k~ = 4/3 E* sqrt(R*), damping member hdamp;
+                            // kt = KAPPA * 2 E* a (run-time path only)
+  MODE_WALTON_BRAUN = 4,    // normal walton_braun KL KUL [S]; kt = KAPPA KL; history xi_max
+  MODE_THORNTON = 5         // normal thornton E NU [E2 NU2] PY; kt = KAPPA 2 E* a;
+                            // history xi_max, f_max
 };
+
+// History values per contact: 3 (tangential spring) + the normal law's own slots.
+inline constexpr int TANGENTIAL_HISTORY = 3;
+inline int history_size(int mode) {
+  return TANGENTIAL_HISTORY + (mode == MODE_WALTON_BRAUN ? tdem::walton_braun::history_size
+                               : mode == MODE_THORNTON   ? tdem::thornton::history_size
+                                                         : 0);
+}
+
+// Damping member of normal hertz (values of LawCoeffs::hdamp).
+enum HertzDamping : int { HDAMP_LINEAR = 0, HDAMP_KK = 1, HDAMP_TSUJI = 2, HDAMP_GENERAL = 3 };
+
+inline tdem::hertz::Damping hertz_damping(int d) {
+  return d == HDAMP_LINEAR ? tdem::hertz::Damping::linear
+         : d == HDAMP_KK   ? tdem::hertz::Damping::kuwabara_kono
+         : d == HDAMP_TSUJI ? tdem::hertz::Damping::tsuji
+                            : tdem::hertz::Damping::general;
+}
 
 // Coefficients of one type pair (or of one wall). Plain data, written to restart files.
 struct LawCoeffs {
@@ -44,6 +72,19 @@ struct LawCoeffs {
   double e = 0, tc = 0, kappa = 0;                          // restitution mode (mu shared)
   // derived (restitution mode): per unit effective mass
   double k_per_mass = 0, gamma_per_mass = 0;
+  // normal hertz (MODE_HERTZ): materials of the two partners (pair: type I, type J; wall fix:
+  // sphere, wall), damping member and its values, derived E* and (tsuji) alpha
+  int hdamp = HDAMP_LINEAR, pad2 = 0;
+  double E1 = 0, nu1 = 0, E2 = 0, nu2 = 0;
+  double hgamma = 0;  // linear [mass/time], kuwabara_kono [mass/(time length^1/2)],
+                      // general [mass/(time length^THETA)]; tsuji: derived alpha
+  double htheta = 0;  // general: exponent THETA
+  double he = 0;      // tsuji: requested restitution E
+  double estar = 0;   // derived: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2
+  // normal walton_braun (MODE_WALTON_BRAUN): k_l, k_u, s (k_ul = k_u + s F_max)
+  double wb_kl = 0, wb_ku = 0, wb_s = 0;
+  // normal thornton (MODE_THORNTON): limiting contact pressure p_y (materials in E1 .. estar)
+  double th_py = 0;
 };
 
 inline tdem::ContactEnd contact_end(int end) {
@@ -78,7 +119,7 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
                              double delz, double r, double rinv, double rsqinv, double overlap,
                              double vr1, double vr2, double vr3, double wr1, double wr2,
                              double wr3, double dt, bool update, double *shear, double &ccel,
-                             double *fs) {
+                             double *fs, double radi = 0.0, double radj = 0.0) {
   const int mode = M >= 0 ? M : c.mode;
   const int end = E >= 0 ? E : c.end;
   const int slip = S >= 0 ? S : c.slip;
@@ -106,7 +147,7 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     nc.gamma = c.gamman;
     tp.kt = c.kt;
     tp.gammat = c.gammat;
-  } else {
+  } else {  // MODE_RESTITUTION (MODE_HERTZ sets tp below and does not use nc)
     nc.k = meff * c.k_per_mass;
     nc.gamma = meff * c.gamma_per_mass;
     tp.kt = c.kappa * nc.k;
@@ -114,7 +155,53 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
   }
 
   // normal law, as force over distance (LAMMPS applies it along del)
-  if (end)
+  if (mode == MODE_HERTZ) {
+    // R* from the two radii (radj = 0: wall, R* = R_i); k~ = 4/3 E* sqrt(R*)
+    const double reff = radj > 0.0 ? radi * radj / (radi + radj) : radi;
+    tdem::hertz::Params<double> hp;
+    hp.k = tdem::hertz::stiffness(c.estar, reff);
+    hp.damp = c.hgamma;
+    hp.theta = c.htheta;
+    tdem::NormalKinematics<double> kin;
+    kin.overlap = overlap;
+    kin.overlap_rate = -vnnr * rinv;
+    kin.meff = meff;
+    kin.reff = reff;
+    const auto res = tdem::hertz::force(hertz_damping(c.hdamp), contact_end(end), hp, kin);
+    ccel = res.force * rinv;
+    tp.kt = c.kappa * res.stiffness;  // KAPPA * 2 E* a, tangent stiffness dF/dxi
+    tp.gammat = 0.0;
+  } else if (mode == MODE_WALTON_BRAUN) {
+    // hysteretic: xi_max in history slot TANGENTIAL_HISTORY (after the tangential spring)
+    tdem::walton_braun::Params<double> wp;
+    wp.k_load = c.wb_kl;
+    wp.k_unload = c.wb_ku;
+    wp.slope = c.wb_s;
+    tdem::NormalKinematics<double> kin;
+    kin.overlap = overlap;
+    kin.overlap_rate = -vnnr * rinv;
+    kin.meff = meff;
+    kin.reff = 0.0;
+    const auto res = tdem::walton_braun::force(wp, kin, shear + TANGENTIAL_HISTORY, update);
+    ccel = res.force * rinv;
+    tp.kt = c.kappa * c.wb_kl;
+    tp.gammat = 0.0;
+  } else if (mode == MODE_THORNTON) {
+    // elastic-perfectly plastic; xi_max, f_max in history slots 3, 4
+    const double reff = radj > 0.0 ? radi * radj / (radi + radj) : radi;
+    tdem::thornton::Params<double> thp;
+    thp.e_star = c.estar;
+    thp.p_y = c.th_py;
+    tdem::NormalKinematics<double> kin;
+    kin.overlap = overlap;
+    kin.overlap_rate = -vnnr * rinv;
+    kin.meff = meff;
+    kin.reff = reff;
+    const auto res = tdem::thornton::force(thp, kin, shear + TANGENTIAL_HISTORY, update);
+    ccel = res.force * rinv;
+    tp.kt = c.kappa * 2.0 * c.estar * sqrt(reff * overlap);  // KAPPA * 2 E* a (Hertz tangent)
+    tp.gammat = 0.0;
+  } else if (end)
     ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_force>(nc, overlap, vnnr, rinv, rsqinv);
   else
     ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_overlap>(nc, overlap, vnnr, rinv, rsqinv);

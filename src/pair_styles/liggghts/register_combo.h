@@ -14,6 +14,10 @@
 #include "fix_wall_gran_base.h"
 
 #include "normal_model_tdem_lsd.h"
+#include "normal_model_tdem_hertz.h"
+#include "normal_model_tdem_walton_braun.h"
+#include "normal_model_tdem_thornton.h"
+#include "normal_model_tdem_continuous_potential.h"
 #include "tangential_model_tdem_cundall_strack.h"
 
 namespace tdem {
@@ -51,6 +55,10 @@ void register_lsd_b();
 void register_stock_hooke();
 void register_stock_hertz();
 void register_lsd_rolling();
+void register_hertz();
+void register_walton_braun();
+void register_thornton();
+void register_continuous_potential();
 
 }  // namespace detail
 }  // namespace liggghts

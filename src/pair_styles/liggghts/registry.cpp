@@ -75,6 +75,10 @@ const Names& names() {
 #include "style_surface_model.h"
 #undef SURFACE_MODEL
     r.normal[TDEM_LSD] = kNormalLsdName;
+    r.normal[TDEM_HERTZ] = kNormalHertzName;
+    r.normal[TDEM_WALTON_BRAUN] = kNormalWaltonBraunName;
+    r.normal[TDEM_THORNTON] = kNormalThorntonName;
+    r.normal[TDEM_CONTINUOUS_POTENTIAL] = kNormalContinuousPotentialName;
     r.tangential[TDEM_CUNDALL_STRACK] = kTangentialCundallStrackName;
     return r;
   }();
@@ -156,7 +160,8 @@ int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models
     return hash;  // LIGGGHTS reports the remaining cases (all models off, keyword order)
   }
   const int normal = static_cast<int>(hash & 63), tangential = static_cast<int>((hash >> 6) & 63);
-  if ((normal == TDEM_LSD || tangential == TDEM_CUNDALL_STRACK) && !compiled().count(hash)) {
+  if ((normal == TDEM_LSD || normal == TDEM_HERTZ || normal == TDEM_WALTON_BRAUN ||
+       normal == TDEM_THORNTON || normal == TDEM_CONTINUOUS_POTENTIAL || tangential == TDEM_CUNDALL_STRACK) && !compiled().count(hash)) {
     std::string list;
     for (int64_t h : compiled()) list += "\n  " + describe(h);
     fail("gran contact model: the combination '" + describe(hash) +
@@ -177,12 +182,20 @@ void register_styles() {
   done = true;
   Factory& models = Factory::instance();
   models.addNormalModel(kNormalLsdName, TDEM_LSD);
+  models.addNormalModel(kNormalHertzName, TDEM_HERTZ);
+  models.addNormalModel(kNormalWaltonBraunName, TDEM_WALTON_BRAUN);
+  models.addNormalModel(kNormalThorntonName, TDEM_THORNTON);
+  models.addNormalModel(kNormalContinuousPotentialName, TDEM_CONTINUOUS_POTENTIAL);
   models.addTangentialModel(kTangentialCundallStrackName, TDEM_CUNDALL_STRACK);
   detail::register_lsd_a();
   detail::register_lsd_b();
   detail::register_stock_hooke();
   detail::register_stock_hertz();
   detail::register_lsd_rolling();
+  detail::register_hertz();
+  detail::register_walton_braun();
+  detail::register_thornton();
+  detail::register_continuous_potential();
 }
 
 void attach(LAMMPS_NS::LAMMPS* lmp) {

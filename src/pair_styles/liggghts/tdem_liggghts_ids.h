@@ -13,6 +13,10 @@ namespace ContactModels {
 
 static const int TDEM_LSD = 40;             // model tdem/lsd
 static const int TDEM_CUNDALL_STRACK = 40;  // tangential tdem/cundall_strack
+static const int TDEM_HERTZ = 41;           // model tdem/hertz
+static const int TDEM_WALTON_BRAUN = 42;    // model tdem/walton_braun
+static const int TDEM_THORNTON = 43;        // model tdem/thornton
+static const int TDEM_CONTINUOUS_POTENTIAL = 44;  // model tdem/continuous_potential
 
 }  // namespace ContactModels
 }  // namespace LIGGGHTS
@@ -21,5 +25,9 @@ namespace tdem {
 namespace liggghts {
 inline constexpr const char* kNormalLsdName = "tdem/lsd";
 inline constexpr const char* kTangentialCundallStrackName = "tdem/cundall_strack";
+inline constexpr const char* kNormalHertzName = "tdem/hertz";
+inline constexpr const char* kNormalWaltonBraunName = "tdem/walton_braun";
+inline constexpr const char* kNormalThorntonName = "tdem/thornton";
+inline constexpr const char* kNormalContinuousPotentialName = "tdem/continuous_potential";
 }  // namespace liggghts
 }  // namespace tdem

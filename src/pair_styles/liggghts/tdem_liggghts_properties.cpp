@@ -83,6 +83,31 @@ MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* c
   return create_checked(registry, "tangentialStiffnessRatio", caller, Range::non_negative);
 }
 
+MatrixProperty* create_damping_coefficient(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "dampingCoefficient", caller, Range::non_negative);
+}
+MatrixProperty* create_damping_exponent(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "dampingExponent", caller, Range::non_negative);
+}
+MatrixProperty* create_loading_stiffness(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "loadingStiffness", caller, Range::positive);
+}
+MatrixProperty* create_unloading_stiffness(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "unloadingStiffness", caller, Range::positive);
+}
+MatrixProperty* create_unloading_slope(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "unloadingStiffnessSlope", caller, Range::non_negative);
+}
+MatrixProperty* create_yield_pressure(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "yieldPressure", caller, Range::positive);
+}
+MatrixProperty* create_potential_energy(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "potentialEnergy", caller, Range::positive);
+}
+MatrixProperty* create_potential_exponent(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "potentialExponent", caller, Range::positive);
+}
+
 void check_matrix(LAMMPS_NS::LAMMPS* lmp, double** m, int ntypes, const char* fix_name,
                   const char* caller, int kind) {
   const Range r = kind == 0 ? Range::positive : Range::non_negative;

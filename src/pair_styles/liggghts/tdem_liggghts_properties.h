@@ -17,10 +17,26 @@ namespace liggghts {
 inline constexpr const char* kPropRestitution = "tdem_coefficientRestitution";  // (0, 1]
 inline constexpr const char* kPropContactTime = "tdem_contactTime";             // > 0
 inline constexpr const char* kPropStiffnessRatio = "tdem_tangentialStiffnessRatio";  // >= 0
+inline constexpr const char* kPropDampingCoefficient = "tdem_dampingCoefficient";  // >= 0
+inline constexpr const char* kPropDampingExponent = "tdem_dampingExponent";        // >= 0
+inline constexpr const char* kPropLoadingStiffness = "tdem_loadingStiffness";      // > 0
+inline constexpr const char* kPropUnloadingStiffness = "tdem_unloadingStiffness";  // > 0
+inline constexpr const char* kPropUnloadingSlope = "tdem_unloadingStiffnessSlope"; // >= 0
+inline constexpr const char* kPropYieldPressure = "tdem_yieldPressure";            // > 0
+inline constexpr const char* kPropPotentialEnergy = "tdem_potentialEnergy";        // > 0
+inline constexpr const char* kPropPotentialExponent = "tdem_potentialExponent";    // > 0
 
 MatrixProperty* create_restitution(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_contact_time(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_damping_coefficient(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_damping_exponent(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_loading_stiffness(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_unloading_stiffness(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_unloading_slope(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_yield_pressure(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_potential_energy(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_potential_exponent(PropertyRegistry& registry, const char* caller, bool);
 
 // error->all unless the range check holds for every type pair 1..ntypes of a connected matrix.
 // kind: 0 -> value > 0, 1 -> value >= 0. `fix_name` is the fix property/global name.

@@ -31,6 +31,7 @@ run 10
 """
 GOOD = "normal lsd stiffness 2000 50 tangential cundall_strack 600 25 0.5"
 GOODR = "normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.5"
+GOODH = "normal hertz 2e8 0.3 damping tsuji 0.7 tangential cundall_strack 0.8 0.5 limit_force yes"
 WALL = "fix w all tdem/wall/gran {law} {wall}"
 
 
@@ -40,8 +41,62 @@ def pair(coeff, style="pair_style tdem/gran"):
 
 CASES = [
     # name, body, expected substrings
-    ("unknown normal law", pair("normal hertz 2000 50 tangential cundall_strack 600 25 0.5"),
-     ["normal law 'hertz' is unknown", "allowed: lsd"]),
+    ("unknown normal law", pair("normal hooke 2000 50 tangential cundall_strack 600 25 0.5"),
+     ["normal law 'hooke' is unknown", "allowed: lsd, hertz, walton_braun, thornton"]),
+    # normal hertz
+    ("hertz value count", pair("normal hertz 2e8 0.3 0.1 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz needs 2 values (E NU", "or 4 values", "got 3"]),
+    ("hertz negative E", pair("normal hertz -2e8 0.3 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz E (Young's modulus) = -200000000 must be > 0"]),
+    ("hertz nu above 0.5", pair("normal hertz 2e8 0.6 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz NU (Poisson ratio) = 0.6 is outside the allowed range (-1, 0.5]"]),
+    ("hertz nu -1", pair("normal hertz 2e8 0.3 2e8 -1 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz NU2 (Poisson ratio) = -1 is outside the allowed range (-1, 0.5]"]),
+    ("hertz tsuji e above 1", pair("normal hertz 2e8 0.3 damping tsuji 1.2 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz damping tsuji E = 1.2 is outside the allowed range (0, 1]"]),
+    ("hertz tsuji e zero", pair("normal hertz 2e8 0.3 damping tsuji 0 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz damping tsuji E = 0 is outside the allowed range (0, 1]"]),
+    ("hertz negative gamma", pair("normal hertz 2e8 0.3 damping linear -3 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz damping linear GAMMA = -3 must be >= 0"]),
+    ("hertz general count", pair("normal hertz 2e8 0.3 damping general 0.5 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz damping general needs 2 values (THETA C), got 1"]),
+    ("hertz negative theta", pair("normal hertz 2e8 0.3 damping general -0.5 1 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz damping general THETA = -0.5 must be >= 0"]),
+    ("hertz unknown damping", pair("normal hertz 2e8 0.3 damping viscous 1 tangential cundall_strack 0.8 0.5"),
+     ["normal hertz damping 'viscous' is unknown", "allowed: linear GAMMA, kuwabara_kono GAMMA, tsuji E, general THETA C"]),
+    ("hertz tangential count", pair("normal hertz 2e8 0.3 tangential cundall_strack 0.8"),
+     ["tangential cundall_strack (with normal hertz) needs 2 values (KAPPA MU), got 1"]),
+    ("hertz lsd damping option", pair("normal hertz 2e8 0.3 tangential cundall_strack 0.8 0.5 damping mass"),
+     ["keyword 'damping mass' after the tangential law applies to 'normal lsd stiffness' only"]),
+    ("hertz mixing mismatch", "pair_style tdem/gran\npair_coeff 1 1 normal hertz 2e8 0.3 tangential cundall_strack 0.8 0.5"
+     "\npair_coeff 2 2 normal hertz 1e8 0.3 tangential cundall_strack 0.8 0.4",
+     ["no pair_coeff for type pair 1 2", "differ in more than the material"]),
+    # normal walton_braun
+    ("wb value count", pair("normal walton_braun 1e5 tangential cundall_strack 0.8 0.5"),
+     ["normal walton_braun needs 2 or 3 values (KL KUL [S]), got 1"]),
+    ("wb negative KL", pair("normal walton_braun -1e5 1.5e5 tangential cundall_strack 0.8 0.5"),
+     ["normal walton_braun KL (loading stiffness) = -100000 must be > 0"]),
+    ("wb KUL below KL", pair("normal walton_braun 1e5 5e4 tangential cundall_strack 0.8 0.5"),
+     ["normal walton_braun KUL (unloading stiffness) = 50000 is outside the allowed range [KL, inf) = [100000, inf)"]),
+    ("wb negative S", pair("normal walton_braun 1e5 1e5 -2 tangential cundall_strack 0.8 0.5"),
+     ["normal walton_braun S (slope of KUL with F_max) = -2 must be >= 0"]),
+    ("wb damping", pair("normal walton_braun 1e5 2e5 tangential cundall_strack 0.8 0.5 damping mass"),
+     ["keyword 'damping mass' applies to 'normal lsd stiffness' only"]),
+    ("wall wb count", pair(GOOD) + "\n" + WALL.format(
+        law="normal walton_braun 1e5 2e5 3 4 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL"),
+     ["fix w tdem/wall/gran", "normal walton_braun needs 2 or 3 values (KL KUL [S]), got 4"]),
+    # normal thornton
+    ("thornton value count", pair("normal thornton 2e8 0.3 tangential cundall_strack 0.8 0.5"),
+     ["normal thornton needs 3 values (E NU PY", "or 5 values (E1 NU1 E2 NU2 PY), got 2"]),
+    ("thornton negative PY", pair("normal thornton 2e8 0.3 -1e6 tangential cundall_strack 0.8 0.5"),
+     ["normal thornton PY (limiting contact pressure) = -1000000 must be > 0"]),
+    ("thornton nu", pair("normal thornton 2e8 -1.5 1e6 tangential cundall_strack 0.8 0.5"),
+     ["normal thornton NU (Poisson ratio) = -1.5 is outside the allowed range (-1, 0.5]"]),
+    ("thornton zero E", pair("normal thornton 0 0.3 1e6 tangential cundall_strack 0.8 0.5"),
+     ["normal thornton E (Young's modulus) = 0 must be > 0"]),
+    ("wall hertz bad nu", pair(GOOD) + "\n" + WALL.format(
+        law="normal hertz 2e8 0.3 2e8 0.7 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL"),
+     ["fix w tdem/wall/gran", "normal hertz NU2 (Poisson ratio) = 0.7 is outside the allowed range (-1, 0.5]"]),
     ("unknown tangential law", pair("normal lsd stiffness 2000 50 tangential mindlin 600 25 0.5"),
      ["tangential law 'mindlin' is unknown", "allowed: cundall_strack"]),
     ("unknown parametrisation", pair("normal lsd damped 2000 50 tangential cundall_strack 600 25 0.5"),
@@ -87,7 +142,7 @@ CASES = [
     ("unknown option", pair(GOOD + " rolling sds"),
      ["unexpected argument 'rolling'", "allowed options"]),
     ("missing law", pair(""),
-     ["expected 'normal lsd ...' first, got 'end of line'"]),
+     ["expected 'normal lsd|hertz|walton_braun|thornton ...' first, got 'end of line'"]),
     ("pair_style arguments", pair(GOOD, "pair_style tdem/gran 2000 50"),
      ["pair_style tdem/gran takes no arguments", "'2000'"]),
     ("missing type pair", "pair_style tdem/gran\npair_coeff 1 1 " + GOOD + "\npair_coeff 2 2 " + GOOD,
@@ -115,7 +170,14 @@ for k, (name, body, expect) in enumerate(CASES):
     chk.check(ok, "%s: exit %d, %s" % (name, rc, err[0].strip() if err else "no ERROR line"))
 
 for name, body in (("good stiffness", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0 NULL")),
-                   ("good restitution", pair(GOODR) + "\n" + WALL.format(law=GOODR, wall="zcylinder 0.2"))):
+                   ("good restitution", pair(GOODR) + "\n" + WALL.format(law=GOODR, wall="zcylinder 0.2")),
+                   ("good walton_braun", pair("normal walton_braun 1e5 2e5 0.1 tangential cundall_strack 0.8 0.5")
+                    + "\n" + WALL.format(law="normal walton_braun 1e5 2e5 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL")),
+                   ("good thornton", "pair_style tdem/gran\npair_coeff 1 1 normal thornton 2e8 0.3 1e6 tangential cundall_strack 0.8 0.5"
+                    "\npair_coeff 2 2 normal thornton 1e8 0.2 1e6 tangential cundall_strack 0.8 0.5\n"
+                    + WALL.format(law="normal thornton 2e8 0.3 1e9 0.25 1e6 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL")),
+                   ("good hertz mixed", "pair_style tdem/gran\npair_coeff 1 1 " + GOODH + "\npair_coeff 2 2 "
+                    + GOODH.replace("2e8 0.3", "1e8 0.25") + "\n" + WALL.format(law=GOODH.replace("0.3", "0.3 1e9 0.2"), wall="zplane 0 NULL"))):
     rc, out = lc.run(args["tdem"], BASE.format(body=body).replace("0.05 0.05", "0 0"), wd, "in.good", check=False)
     chk.check(rc == 0 and "Loop time" in out, "control %s: runs (exit %d)" % (name, rc))
 chk.done()

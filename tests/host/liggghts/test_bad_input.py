@@ -133,6 +133,93 @@ CASES = [
      None, [r"tangential tdem/cundall_strack", r"coefficientFriction", r"-0\.5", r">= 0"]),
 ]
 
+GOOD_HERTZ = {
+    "youngsModulus": "peratomtype 5e6 5e6",
+    "poissonsRatio": "peratomtype 0.3 0.3",
+    "coefficientRestitution": "peratomtypepair 2 0.8 0.8 0.8 0.8",
+    "dampingCoefficient": "peratomtypepair 2 0.1 0.1 0.1 0.1",
+    "dampingExponent": "peratomtypepair 2 0.25 0.25 0.25 0.25",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+GOOD_WB = {
+    "loadingStiffness": "peratomtypepair 2 1e4 1e4 1e4 1e4",
+    "unloadingStiffness": "peratomtypepair 2 2e4 2e4 2e4 2e4",
+    "unloadingStiffnessSlope": "peratomtypepair 2 0 0 0 0",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+GOOD_TH = {
+    "youngsModulus": "peratomtype 5e6 5e6",
+    "poissonsRatio": "peratomtype 0.3 0.3",
+    "yieldPressure": "peratomtypepair 2 6e5 6e5 6e5 6e5",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+GOOD_CP = {
+    "potentialEnergy": "peratomtypepair 2 2e-4 2e-4 2e-4 2e-4",
+    "potentialExponent": "peratomtypepair 2 36 36 36 36",
+    "dampingCoefficient": "peratomtypepair 2 0 0 0 0",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+CP = "model tdem/continuous_potential tangential tdem/cundall_strack"
+HERTZ = "model tdem/hertz tangential tdem/cundall_strack"
+WB = "model tdem/walton_braun tangential tdem/cundall_strack"
+TH = "model tdem/thornton tangential tdem/cundall_strack"
+
+CASES += [
+    ("tdem/hertz damping value", HERTZ + " damping viscous", props(GOOD_HERTZ), None,
+     [r"model tdem/hertz", r"keyword 'damping'", r"'viscous'",
+      r"allowed values: linear \| kuwabara_kono \| tsuji \| general"]),
+    ("tdem/hertz limitForce value", HERTZ + " limitForce 1", props(GOOD_HERTZ), None,
+     [r"keyword 'limitForce'", r"'1'", r"allowed values: off \| on"]),
+    ("tdem/hertz not compiled with cohesion", HERTZ + " cohesion sjkr", props(GOOD_HERTZ), None,
+     [r"'model tdem/hertz tangential tdem/cundall_strack cohesion sjkr", r"not compiled"]),
+    ("tdem/hertz tsuji without coefficientRestitution", HERTZ + " damping tsuji",
+     props(GOOD_HERTZ, coefficientRestitution=None), None, [r"coefficientRestitution", r"model tdem/hertz"]),
+    ("tdem/hertz tsuji restitution > 1", HERTZ, props(GOOD_HERTZ, coefficientRestitution="peratomtypepair 2 0.8 1.1 1.1 0.8"),
+     None, [r"model tdem/hertz", r"coefficientRestitution", r"1\.1", r"types 1 2", r"\(0, 1\]"]),
+    ("tdem/hertz linear without dampingCoefficient", HERTZ + " damping linear",
+     props(GOOD_HERTZ, dampingCoefficient=None), None, [r"dampingCoefficient", r"model tdem/hertz"]),
+    ("tdem/hertz negative dampingCoefficient", HERTZ + " damping kuwabara_kono",
+     props(GOOD_HERTZ, dampingCoefficient="peratomtypepair 2 0.1 0.1 0.1 -2"), None,
+     [r"model tdem/hertz", r"dampingCoefficient", r"-2", r"types 2 2", r">= 0"]),
+    ("tdem/hertz general without dampingExponent", HERTZ + " damping general",
+     props(GOOD_HERTZ, dampingExponent=None), None, [r"dampingExponent", r"model tdem/hertz"]),
+    ("tdem/hertz negative dampingExponent via wall", HERTZ,
+     props(GOOD_HERTZ, dampingExponent="peratomtypepair 2 -0.5 0.25 0.25 0.25"),
+     HERTZ + " primitive type 1 zplane 0.0 damping general",
+     [r"model tdem/hertz", r"dampingExponent", r"-0\.5", r"types 1 1", r">= 0"]),
+    ("tdem/hertz negative tangentialStiffnessRatio", HERTZ,
+     props(GOOD_HERTZ, tangentialStiffnessRatio="peratomtypepair 2 0.3 0.3 0.3 -1"), None,
+     [r"tangentialStiffnessRatio", r"-1", r">= 0"]),
+    ("tdem/walton_braun unloadingStiffness < loadingStiffness", WB,
+     props(GOOD_WB, unloadingStiffness="peratomtypepair 2 2e4 5e3 5e3 2e4"), None,
+     [r"model tdem/walton_braun", r"unloadingStiffness", r"5000", r"types 1 2", r">= loadingStiffness \(10000\)"]),
+    ("tdem/walton_braun loadingStiffness = 0", WB,
+     props(GOOD_WB, loadingStiffness="peratomtypepair 2 1e4 1e4 1e4 0"), None,
+     [r"model tdem/walton_braun", r"loadingStiffness", r"value 0 ", r"types 2 2", r"> 0"]),
+    ("tdem/walton_braun negative slope", WB,
+     props(GOOD_WB, unloadingStiffnessSlope="peratomtypepair 2 0 -3 -3 0"), None,
+     [r"unloadingStiffnessSlope", r"-3", r"types 1 2", r">= 0"]),
+    ("tdem/walton_braun missing unloadingStiffnessSlope", WB, props(GOOD_WB, unloadingStiffnessSlope=None),
+     None, [r"unloadingStiffnessSlope"]),
+    ("tdem/walton_braun unknown setting", WB + " damping tsuji", props(GOOD_WB), None, [r"damping"]),
+    ("tdem/thornton yieldPressure <= 0", TH, props(GOOD_TH, yieldPressure="peratomtypepair 2 6e5 -1e5 -1e5 6e5"),
+     None, [r"model tdem/thornton", r"yieldPressure", r"-100000", r"types 1 2", r"> 0"]),
+    ("tdem/thornton missing yieldPressure", TH, props(GOOD_TH, yieldPressure=None), None, [r"yieldPressure"]),
+    ("tdem/continuous_potential potentialExponent <= 0", CP,
+     props(GOOD_CP, potentialExponent="peratomtypepair 2 36 0 0 36"), None,
+     [r"model tdem/continuous_potential", r"potentialExponent", r"value 0 ", r"types 1 2", r"> 0"]),
+    ("tdem/continuous_potential missing potentialEnergy", CP, props(GOOD_CP, potentialEnergy=None), None,
+     [r"potentialEnergy"]),
+    ("tdem/continuous_potential limitForce value", CP + " limitForce maybe", props(GOOD_CP), None,
+     [r"model tdem/continuous_potential", r"keyword 'limitForce'", r"'maybe'", r"allowed values: off \| on"]),
+    ("tdem/thornton yieldPressure = 0 via wall", TH, props(GOOD_TH, yieldPressure="peratomtypepair 2 0 0 0 0"),
+     TH + " primitive type 1 zplane 0.0", [r"yieldPressure", r"value 0 ", r"> 0"]),
+]
+
 
 def main():
     args = T.parse_args()

@@ -105,16 +105,18 @@ def main():
         checks.check(rs.returncode == 0 and rt.returncode == 0, name + ": stock and tdem-liggghts both finish")
         checks.check(len(ts) > 1 and ts == tt, name + ": identical thermo output (%d lines)" % len(ts))
     # the tdem example of this repository (input_scripts/liggghts), shortened
-    if not args.only or "input_scripts" in args.only:
+    for example in ("in.tdem_lsd_box", "in.tdem_nonlinear_box"):
+        if args.only and "input_scripts" not in args.only:
+            break
         ex = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "input_scripts",
-                          "liggghts", "in.tdem_lsd_box")
-        d = T.workdir(args, "tdem_lig_ex_input_scripts")
+                          "liggghts", example)
+        d = T.workdir(args, "tdem_lig_ex_input_scripts_" + example[3:])
         with open(ex) as f:
             text = shorten(f.read(), 4000)
         r = T.run(args.tdem, text, d, "box", check=False)
         rows = [l.split() for l in T.thermo_blocks(r.stdout)[-1][1]] if T.thermo_blocks(r.stdout) else []
         checks.check(r.returncode == 0 and rows and rows[-1][:2] == ["4000", "1000"],
-                     "input_scripts/liggghts/in.tdem_lsd_box: runs under tdem-liggghts, 1000 atoms at step 4000")
+                     "input_scripts/liggghts/%s: runs under tdem-liggghts, 1000 atoms at step 4000" % example)
     for name, why in SKIPPED.items():
         print("not run: %s: %s" % (name, why))
     checks.done()

@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: `model tdem/hertz` -- Hertz spring plus an overlap-dependent damper
+// (src/contact/normal/hertz_damped.h) as a LIGGGHTS NormalModel. Adapter only.
+//
+//   pair_style gran model tdem/hertz [tangential ...] [damping linear|kuwabara_kono|tsuji|general]
+//              [limitForce off|on]
+//
+// F = k~ xi^(3/2) + c xi^Theta xi_dot with k~ = 4/3 Y* sqrt(R*) (Y* = LIGGGHTS's Yeff from
+// youngsModulus / poissonsRatio; R* = R_i for a wall).
+//   damping tsuji (default): c = alpha sqrt(m* k~), alpha from coefficientRestitution in the
+//     convention of limitForce (tdem::hertz::tsuji_alpha_from_restitution), once per type pair.
+//   damping linear | kuwabara_kono | general: c = dampingCoefficient (Theta = 0 | 1/2 |
+//     dampingExponent).
+// Tangential: kt = tangentialStiffnessRatio * dF/dxi (dF/dxi = 2 Y* a = 3/2 k~ sqrt(xi)), gammat = 0.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "contact_models.h"
+#include "normal_model_base.h"
+#include "global_properties.h"
+#include "force.h"
+#include "atom.h"
+#include "error.h"
+
+#include "contact/normal/hertz_damped.h"
+#include "tdem_liggghts_ids.h"
+#include "tdem_liggghts_properties.h"
+#include "tdem_liggghts_settings.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+template <>
+class NormalModel<TDEM_HERTZ> : public NormalModelBase {
+ public:
+  enum DampingWord { LINEAR = 0, KUWABARA_KONO = 1, TSUJI = 2, GENERAL = 3 };
+
+  NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
+      : NormalModelBase(lmp, hsetup, c) {}
+
+  void registerSettings(Settings& settings) {
+    tdem::liggghts::register_enum(settings, "model tdem/hertz", "damping", damping_word_,
+                                  {"linear", "kuwabara_kono", "tsuji", "general"}, TSUJI);
+    tdem::liggghts::register_on_off(settings, "model tdem/hertz", "limitForce", limit_force_, false);
+  }
+
+  void postSettings(IContactHistorySetup*, ContactModelBase*) {
+    static const tdem::hertz::Damping map[] = {tdem::hertz::Damping::linear, tdem::hertz::Damping::kuwabara_kono,
+                                               tdem::hertz::Damping::tsuji, tdem::hertz::Damping::general};
+    damping_ = map[damping_word_];
+    end_ = limit_force_ ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
+  }
+
+  void connectToProperties(PropertyRegistry& registry) {
+    static const char* caller = "model tdem/hertz";
+    if (force->cg_active())
+      error->all(FLERR, "model tdem/hertz does not support coarse-graining (cg factor != 1)");
+    postSettings(nullptr, nullptr);
+    const int n = atom->ntypes;
+    coef_.resize(n);
+    double **yeff = nullptr, **kappa = nullptr, **e = nullptr, **c = nullptr, **theta = nullptr;
+    registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff);
+    registry.registerProperty(tdem::liggghts::kPropStiffnessRatio, &tdem::liggghts::create_stiffness_ratio);
+    registry.connect("Yeff", yeff, caller);
+    registry.connect(tdem::liggghts::kPropStiffnessRatio, kappa, caller);
+    if (damping_ == tdem::hertz::Damping::tsuji) {
+      registry.registerProperty(tdem::liggghts::kPropRestitution, &tdem::liggghts::create_restitution);
+      registry.connect(tdem::liggghts::kPropRestitution, e, caller);
+    } else {
+      registry.registerProperty(tdem::liggghts::kPropDampingCoefficient,
+                                &tdem::liggghts::create_damping_coefficient);
+      registry.connect(tdem::liggghts::kPropDampingCoefficient, c, caller);
+      if (damping_ == tdem::hertz::Damping::general) {
+        registry.registerProperty(tdem::liggghts::kPropDampingExponent, &tdem::liggghts::create_damping_exponent);
+        registry.connect(tdem::liggghts::kPropDampingExponent, theta, caller);
+      }
+    }
+    tdem::liggghts::check_matrix(lmp, yeff, n, "youngsModulus (effective modulus Yeff)", caller, 0);
+    for (int i = 1; i <= n; ++i)
+      for (int j = 1; j <= n; ++j) {
+        PairCoefficients& pc = coef_(i, j);
+        pc.k_per_sqrt_r = 4.0 / 3.0 * yeff[i][j] / force->nktv2p;  // k~ / sqrt(R*)
+        pc.kappa = kappa[i][j];
+        pc.theta = theta ? theta[i][j] : 0.0;
+        if (e) {
+          try {
+            pc.damp = tdem::hertz::tsuji_alpha_from_restitution(e[i][j], end_);
+          } catch (const std::exception& ex) {
+            char buf[512];
+            std::snprintf(buf, sizeof buf,
+                          "model tdem/hertz: atom types %d %d: coefficientRestitution %.17g gives no "
+                          "Tsuji damping (%s)", i, j, e[i][j], ex.what());
+            error->all(FLERR, buf);
+          }
+        } else {
+          pc.damp = c[i][j];
+        }
+      }
+  }
+
+  inline double stressStrainExponent() { return 1.5; }
+
+  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
+    const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
+    const tdem::hertz::Params<double> p{pc.k_per_sqrt_r * std::sqrt(reff), pc.damp, pc.theta};
+    // overlap rate = -vn (LIGGGHTS's vn has the opposite sign)
+    const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, reff};
+    const tdem::NormalResult<double> r = tdem::hertz::force(damping_, end_, p, kin);
+    const double Fn = r.force;
+    sidata.Fn = Fn;
+    sidata.kn = r.stiffness;
+    sidata.kt = pc.kappa * r.stiffness;
+    sidata.gamman = r.damping;
+    sidata.gammat = 0.0;
+    if (sidata.is_wall) {
+      const double Fn_ = Fn * sidata.area_ratio;
+      i_forces.delta_F[0] += Fn_ * sidata.en[0];
+      i_forces.delta_F[1] += Fn_ * sidata.en[1];
+      i_forces.delta_F[2] += Fn_ * sidata.en[2];
+    } else {
+      i_forces.delta_F[0] += Fn * sidata.en[0];
+      i_forces.delta_F[1] += Fn * sidata.en[1];
+      i_forces.delta_F[2] += Fn * sidata.en[2];
+      j_forces.delta_F[0] += -i_forces.delta_F[0];
+      j_forces.delta_F[1] += -i_forces.delta_F[1];
+      j_forces.delta_F[2] += -i_forces.delta_F[2];
+    }
+  }
+
+  void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {
+    if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+  }
+  void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
+  void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
+
+ private:
+  struct PairCoefficients {
+    double k_per_sqrt_r, damp, theta, kappa;
+  };
+  tdem::liggghts::PairTable<PairCoefficients> coef_;
+  int damping_word_ = TSUJI;
+  bool limit_force_ = false;
+  tdem::hertz::Damping damping_ = tdem::hertz::Damping::tsuji;
+  tdem::ContactEnd end_ = tdem::ContactEnd::zero_overlap;
+};
+
+}  // namespace ContactModels
+}  // namespace LIGGGHTS

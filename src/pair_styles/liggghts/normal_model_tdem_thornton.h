@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: `model tdem/thornton` -- Thornton's elastic-perfectly-plastic law
+// (src/contact/normal/thornton.h) as a LIGGGHTS NormalModel. Adapter only.
+//
+//   pair_style gran model tdem/thornton [tangential ...]
+//
+// Properties: youngsModulus, poissonsRatio (peratomtype; LIGGGHTS's Yeff is E*), yieldPressure
+// p_y > 0 and tangentialStiffnessRatio kappa (peratomtypepair); kt = kappa dF/dxi.
+// Per-contact history: xi_max, f_max (scalars, no sign flip), reset when the particles separate.
+#pragma once
+
+#include <cmath>
+
+#include "contact_models.h"
+#include "normal_model_base.h"
+#include "global_properties.h"
+#include "force.h"
+#include "atom.h"
+#include "error.h"
+
+#include "contact/normal/thornton.h"
+#include "tdem_liggghts_ids.h"
+#include "tdem_liggghts_properties.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+template <>
+class NormalModel<TDEM_THORNTON> : public NormalModelBase {
+ public:
+  NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
+      : NormalModelBase(lmp, hsetup, c) {
+    history_offset_ = hsetup->add_history_value("xi_max", "0");
+    const int second = hsetup->add_history_value("f_max", "0");
+    if (second != history_offset_ + 1)
+      error->all(FLERR, "model tdem/thornton: history values xi_max, f_max are not adjacent");
+  }
+
+  void registerSettings(Settings&) {}
+  void postSettings(IContactHistorySetup*, ContactModelBase*) {}
+
+  void connectToProperties(PropertyRegistry& registry) {
+    static const char* caller = "model tdem/thornton";
+    if (force->cg_active())
+      error->all(FLERR, "model tdem/thornton does not support coarse-graining (cg factor != 1)");
+    const int n = atom->ntypes;
+    coef_.resize(n);
+    double **yeff = nullptr, **py = nullptr, **kappa = nullptr;
+    registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff);
+    registry.registerProperty(tdem::liggghts::kPropYieldPressure, &tdem::liggghts::create_yield_pressure);
+    registry.registerProperty(tdem::liggghts::kPropStiffnessRatio, &tdem::liggghts::create_stiffness_ratio);
+    registry.connect("Yeff", yeff, caller);
+    registry.connect(tdem::liggghts::kPropYieldPressure, py, caller);
+    registry.connect(tdem::liggghts::kPropStiffnessRatio, kappa, caller);
+    tdem::liggghts::check_matrix(lmp, yeff, n, "youngsModulus (effective modulus Yeff)", caller, 0);
+    for (int i = 1; i <= n; ++i)
+      for (int j = 1; j <= n; ++j) {
+        PairCoefficients& pc = coef_(i, j);
+        pc.p = {yeff[i][j] / force->nktv2p, py[i][j] / force->nktv2p};
+        pc.kappa = kappa[i][j];
+      }
+  }
+
+  inline double stressStrainExponent() { return 1.5; }
+
+  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
+    const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
+    double* const hist = &sidata.contact_history[history_offset_];
+    const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, reff};
+    const tdem::NormalResult<double> r =
+        tdem::thornton::force(pc.p, kin, hist, sidata.computeflag && sidata.shearupdate);
+    const double Fn = r.force;
+    sidata.Fn = Fn;
+    sidata.kn = r.stiffness;
+    sidata.kt = pc.kappa * r.stiffness;
+    sidata.gamman = 0.0;
+    sidata.gammat = 0.0;
+    if (sidata.is_wall) {
+      const double Fn_ = Fn * sidata.area_ratio;
+      i_forces.delta_F[0] += Fn_ * sidata.en[0];
+      i_forces.delta_F[1] += Fn_ * sidata.en[1];
+      i_forces.delta_F[2] += Fn_ * sidata.en[2];
+    } else {
+      i_forces.delta_F[0] += Fn * sidata.en[0];
+      i_forces.delta_F[1] += Fn * sidata.en[1];
+      i_forces.delta_F[2] += Fn * sidata.en[2];
+      j_forces.delta_F[0] += -i_forces.delta_F[0];
+      j_forces.delta_F[1] += -i_forces.delta_F[1];
+      j_forces.delta_F[2] += -i_forces.delta_F[2];
+    }
+  }
+
+  void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {
+    if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (scdata.contact_history) {
+      scdata.contact_history[history_offset_] = 0.0;
+      scdata.contact_history[history_offset_ + 1] = 0.0;
+    }
+  }
+  void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
+  void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
+
+ private:
+  struct PairCoefficients {
+    tdem::thornton::Params<double> p;
+    double kappa;
+  };
+  tdem::liggghts::PairTable<PairCoefficients> coef_;
+  int history_offset_ = 0;
+};
+
+}  // namespace ContactModels
+}  // namespace LIGGGHTS
