@@ -18,6 +18,7 @@
 #include "atom.h"
 #include "error.h"
 
+#include "tdem_liggghts_apply.h"
 #include "contact/normal/continuous_potential.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
@@ -78,19 +79,7 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
     sidata.kt = pc.kappa * r.stiffness;
     sidata.gamman = r.damping;
     sidata.gammat = 0.0;
-    if (sidata.is_wall) {
-      const double Fn_ = Fn * sidata.area_ratio;
-      i_forces.delta_F[0] += Fn_ * sidata.en[0];
-      i_forces.delta_F[1] += Fn_ * sidata.en[1];
-      i_forces.delta_F[2] += Fn_ * sidata.en[2];
-    } else {
-      i_forces.delta_F[0] += Fn * sidata.en[0];
-      i_forces.delta_F[1] += Fn * sidata.en[1];
-      i_forces.delta_F[2] += Fn * sidata.en[2];
-      j_forces.delta_F[0] += -i_forces.delta_F[0];
-      j_forces.delta_F[1] += -i_forces.delta_F[1];
-      j_forces.delta_F[2] += -i_forces.delta_F[2];
-    }
+    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
   }
 
   void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {

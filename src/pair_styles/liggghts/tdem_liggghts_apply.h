@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: applies a normal law's force sidata.Fn to the two partners the way LIGGGHTS's own
+// normal models do (same arithmetic, so trajectories stay bitwise equal to the stock models).
+#pragma once
+
+#include "contact_interface.h"
+
+namespace tdem {
+namespace liggghts {
+
+inline void apply_normal_force(const LIGGGHTS::ContactModels::SurfacesIntersectData& sidata,
+                               LIGGGHTS::ContactModels::ForceData& i_forces,
+                               LIGGGHTS::ContactModels::ForceData& j_forces) {
+  const double Fn = sidata.Fn;
+  if (sidata.is_wall) {
+    const double Fn_ = Fn * sidata.area_ratio;
+    i_forces.delta_F[0] += Fn_ * sidata.en[0];
+    i_forces.delta_F[1] += Fn_ * sidata.en[1];
+    i_forces.delta_F[2] += Fn_ * sidata.en[2];
+  } else {
+    i_forces.delta_F[0] += Fn * sidata.en[0];
+    i_forces.delta_F[1] += Fn * sidata.en[1];
+    i_forces.delta_F[2] += Fn * sidata.en[2];
+    j_forces.delta_F[0] += -i_forces.delta_F[0];
+    j_forces.delta_F[1] += -i_forces.delta_F[1];
+    j_forces.delta_F[2] += -i_forces.delta_F[2];
+  }
+}
+
+}  // namespace liggghts
+}  // namespace tdem
