@@ -112,13 +112,7 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
     // overlap rate = -vn (LIGGGHTS's vn has the opposite sign)
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, reff};
     const tdem::NormalResult<double> r = tdem::hertz::force(damping_, end_, p, kin);
-    const double Fn = r.force;
-    sidata.Fn = Fn;
-    sidata.kn = r.stiffness;
-    sidata.kt = pc.kappa * r.stiffness;
-    sidata.gamman = r.damping;
-    sidata.gammat = 0.0;
-    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+    tdem::liggghts::apply_normal_result(sidata, r.force, r.stiffness, pc.kappa * r.stiffness, r.damping, i_forces, j_forces);
   }
 
   void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {

@@ -72,13 +72,7 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, reff};
     const tdem::NormalResult<double> r =
         tdem::thornton::force(pc.p, kin, hist, sidata.computeflag && sidata.shearupdate);
-    const double Fn = r.force;
-    sidata.Fn = Fn;
-    sidata.kn = r.stiffness;
-    sidata.kt = pc.kappa * r.stiffness;
-    sidata.gamman = 0.0;
-    sidata.gammat = 0.0;
-    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+    tdem::liggghts::apply_normal_result(sidata, r.force, r.stiffness, pc.kappa * r.stiffness, 0.0, i_forces, j_forces);
   }
 
   void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {

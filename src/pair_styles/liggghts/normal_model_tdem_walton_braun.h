@@ -78,13 +78,7 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, 0.0};
     const tdem::NormalResult<double> r =
         tdem::walton_braun::force(pc.p, kin, hist, sidata.computeflag && sidata.shearupdate);
-    const double Fn = r.force;
-    sidata.Fn = Fn;
-    sidata.kn = r.stiffness;
-    sidata.kt = pc.kt;
-    sidata.gamman = 0.0;
-    sidata.gammat = 0.0;
-    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+    tdem::liggghts::apply_normal_result(sidata, r.force, r.stiffness, pc.kt, 0.0, i_forces, j_forces);
   }
 
   void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {
