@@ -32,9 +32,11 @@
 
 #include "contact/kinematics.h"
 #include "contact/normal/continuous_potential.h"
+#include "contact/normal/extended.h"
 #include "contact/normal/hertz_damped.h"
 #include "contact/normal/input_checks.h"
 #include "contact/normal/linear_viscoelastic.h"
+#include "contact/normal/power_law_hysteresis.h"
 #include "contact/normal/thornton.h"
 #include "contact/normal/walton_braun.h"
 
@@ -123,6 +125,57 @@ struct ThorntonLaw {
   // Hertz's t_c = 2.943 xi_max / v0 with the elastic-plastic largest overlap.
   double contact_time_estimate(double meff, double reff, double v0) const {
     return hertz::contact_time_constant() * thornton::max_overlap(p, reff, meff, v0) / v0;
+  }
+  void reset() { std::fill(std::begin(hist), std::end(hist), 0.0); }
+};
+
+struct PowerLawLaw {
+  power_law::Params<double> p{};
+  double hist[power_law::history_size] = {0.0};
+
+  NormalResult<double> force(double xi, double xi_dot, double meff, double reff, bool update) {
+    return power_law::force(p, NormalKinematics<double>{std::max(xi, 0.0), xi_dot, meff, reff}, hist, update);
+  }
+  ContactEnd end() const { return ContactEnd::zero_force; }
+  double start_overlap() const { return 0.0; }
+  double contact_time_estimate(double meff, double, double v0) const {
+    return 2.0 * power_law::max_overlap(p, meff, v0) / v0 * power_law::shape_integral(p.p);
+  }
+  void reset() { std::fill(std::begin(hist), std::end(hist), 0.0); }
+};
+
+// The extended laws take their coefficients at the first evaluation (the touch, xi' = v0),
+// which integrate() makes with update = true.
+struct ExtendedLinearLaw {
+  extended::LinearParams p{};
+  ContactEnd end_mode = ContactEnd::zero_overlap;
+  double hist[extended::linear_history_size] = {0.0, 0.0, 0.0};
+
+  NormalResult<double> force(double xi, double xi_dot, double meff, double reff, bool update) {
+    return extended::linear_force(end_mode, p, NormalKinematics<double>{std::max(xi, 0.0), xi_dot, meff, reff},
+                                  hist, update);
+  }
+  ContactEnd end() const { return end_mode; }
+  double start_overlap() const { return 0.0; }
+  double contact_time_estimate(double, double, double v0) const {
+    return extended::linear_contact_time(p, v0);
+  }
+  void reset() { std::fill(std::begin(hist), std::end(hist), 0.0); }
+};
+
+struct ExtendedHertzLaw {
+  extended::HertzParams p{};
+  ContactEnd end_mode = ContactEnd::zero_overlap;
+  double hist[extended::hertz_history_size] = {0.0, 0.0};
+
+  NormalResult<double> force(double xi, double xi_dot, double meff, double reff, bool update) {
+    return extended::hertz_force(end_mode, p, NormalKinematics<double>{std::max(xi, 0.0), xi_dot, meff, reff},
+                                 hist, update);
+  }
+  ContactEnd end() const { return end_mode; }
+  double start_overlap() const { return 0.0; }
+  double contact_time_estimate(double meff, double, double v0) const {
+    return hertz::contact_time_elastic(p.k, meff, v0);
   }
   void reset() { std::fill(std::begin(hist), std::end(hist), 0.0); }
 };

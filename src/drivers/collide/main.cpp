@@ -60,6 +60,19 @@ Laws and their parameters (coefficients, or measurable quantities):
       --eps EPS [J] | --x-min X (closest approach at v0 [m]);  --n N (default 36)
       --d D (default R1 + R2, or R1 with --wall);  --x-cut X (default inf; the collision
       starts at X_cut, or at X = d without cut-off);  --gamma G [kg/s] (default 0);  --end
+  --law power_law         power-law hysteresis F = a_l xi^p, unloading a_ul (xi - xi_f)^(p+q)
+      --al A --p P  and  --aul A [--q Q]  (default q = 0) | --e E  (q = 0, a_ul from e)
+  --law extended_linear   k, gamma from measured e(v0), t_c(v0) at first touch
+      --e-fit constant|rational|power --e-coef C0[,C1[,C2]]
+            constant e = C0;  rational e = C0 / (C1 + v0^C2);  power e = min(1, (v0/C0)^(-C1))
+      --tc-fit constant|power --tc-coef C0[,C1]
+            constant t_c = C0;  power t_c = C0 v0^(-C1)
+      --v-min V --v-max V     clamp of v0 before the fits (default 1e-3, 1e3 m/s)
+      --e-min E               smallest e a fit may give (default 1e-3)
+      --end zero_overlap|zero_force   (default zero_overlap)
+  --law extended_hertz    Hertz spring (stiffness as hertz: --k | --Estar | --E --nu ...) with
+                          Tsuji damping alpha(v0) from e(v0): --e-fit, --e-coef, --v-min, --v-max,
+                          --e-min, --end as extended_linear
 
 Integration and output:
   --steps N               RK4 steps per estimated contact time, 1 ... 1e6 (default 4000)
@@ -91,7 +104,9 @@ class Args {
         "--law", "--m1", "--m2", "--R1", "--R2", "--rho", "--rho2", "--wall", "--v0", "--k",
         "--gamma", "--e", "--tc", "--end", "--Estar", "--E", "--nu", "--E2", "--nu2",
         "--damping", "--A", "--alpha", "--theta", "--kl", "--kul", "--s", "--py", "--vy",
-        "--eps", "--x-min", "--n", "--d", "--x-cut", "--steps", "--dt", "--curve", "--help"};
+        "--eps", "--x-min", "--n", "--d", "--x-cut", "--steps", "--dt", "--curve", "--help",
+        "--e-fit", "--e-coef", "--tc-fit", "--tc-coef", "--v-min", "--v-max", "--e-min", "--al", "--p",
+        "--aul", "--q"};
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
       if (a == "-h") a = "--help";
@@ -254,6 +269,49 @@ double need_reff(const Bodies& b, const char* why) {
   return b.reff();
 }
 
+// "C0,C1,..." -> the coefficients of a fit form.
+fits::Fit read_fit(Args& a, const std::string& form_opt, const std::string& coef_opt, char what) {
+  a.require(form_opt, "for this law");
+  a.require(coef_opt, "with " + form_opt);
+  fits::Fit f;
+  const std::vector<std::string> forms = what == 'e' ? std::vector<std::string>{"constant", "rational", "power"}
+                                                     : std::vector<std::string>{"constant", "power"};
+  fits::parse(a.choice(form_opt, forms), f.form);
+  const std::string list = a.str(coef_opt);
+  std::vector<double> c;
+  size_t pos = 0;
+  while (pos <= list.size()) {
+    const size_t comma = std::min(list.find(',', pos), list.size());
+    const std::string item = list.substr(pos, comma - pos);
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(v))
+      throw BadInput("option " + coef_opt + ": '" + item + "' is not a finite number");
+    c.push_back(v);
+    pos = comma + 1;
+  }
+  const int n = fits::coefficient_count(f.form, what);
+  if (static_cast<int>(c.size()) != n)
+    throw BadInput("option " + coef_opt + " needs " + std::to_string(n) + " comma-separated coefficients for form '" +
+                   fits::to_string(f.form) + "', got " + std::to_string(c.size()));
+  for (int i = 0; i < n; ++i) f.c[i] = c[i];
+  return f;
+}
+
+fits::Range read_range(Args& a) {
+  fits::Range r;
+  if (a.has("--v-min")) r.v_min = a.positive("--v-min");
+  if (a.has("--v-max")) r.v_max = a.positive("--v-max");
+  if (a.has("--e-min")) r.e_min = a.number("--e-min", 0.0, 1.0, true, true, "(0, 1)");
+  fits::validate_range(r);
+  return r;
+}
+
+void fit_params(std::vector<std::pair<std::string, double>>& P, const char* name, const fits::Fit& f) {
+  const int n = fits::coefficient_count(f.form, name[0] == 'e' ? 'e' : 't');
+  for (int i = 0; i < n; ++i) P.push_back({std::string(name) + "_c" + std::to_string(i), f.c[i]});
+}
+
 struct Run {
   std::string law, end, damping;  // damping: hertz only
   std::vector<std::pair<std::string, double>> params;  // the coefficients used
@@ -280,8 +338,10 @@ collision::Result go(Law& law, const Bodies& b, double v0, const collision::Opti
 Run run(Args& a) {
   Run run;
   if (a.flag("--help")) return run;
-  a.require("--law", "(lsd, hertz, walton_braun, thornton, continuous_potential)");
-  run.law = a.choice("--law", {"lsd", "hertz", "walton_braun", "thornton", "continuous_potential"});
+  a.require("--law", "(lsd, hertz, walton_braun, thornton, continuous_potential, power_law, extended_linear, "
+                     "extended_hertz)");
+  run.law = a.choice("--law", {"lsd", "hertz", "walton_braun", "thornton", "continuous_potential", "power_law",
+                               "extended_linear", "extended_hertz"});
   a.require("--v0", "(impact velocity)");
   const double v0 = a.positive("--v0");
 
@@ -473,6 +533,69 @@ Run run(Args& a) {
          {"v_y", thornton::yield_velocity(law.p, reff, meff)}};
     predict(run, "e", [&] { return thornton::restitution(law.p, reff, meff, v0); });
     predict(run, "max_overlap", [&] { return thornton::max_overlap(law.p, reff, meff, v0); });
+    a.check_all_used(run.law);
+    run.result = go(law, b, v0, opt);
+  } else if (run.law == "power_law") {
+    collision::PowerLawLaw law;
+    if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
+      throw BadInput("option --end = zero_overlap is not allowed for --law power_law (allowed: zero_force)");
+    a.require("--al", "for --law power_law");
+    a.require("--p", "for --law power_law");
+    law.p.a_load = a.positive("--al");
+    law.p.p = a.positive("--p");
+    if (a.has("--e")) {
+      a.forbid("--aul", "together with --e");
+      a.forbid("--q", "together with --e (q = 0)");
+      law.p = power_law::from_restitution(law.p.a_load, law.p.p, a.restitution("--e"));
+    } else {
+      a.require("--aul", "(or --e) for --law power_law");
+      law.p.a_unload = a.positive("--aul");
+      law.p.q = a.has("--q") ? a.non_negative("--q") : 0.0;
+    }
+    power_law::validate(law.p);
+    run.end = "zero_force";
+    P = {{"a_l", law.p.a_load}, {"p", law.p.p}, {"a_ul", law.p.a_unload}, {"q", law.p.q}};
+    predict(run, "e", [&] { return power_law::restitution(law.p, meff, v0); });
+    predict(run, "contact_time", [&] { return power_law::contact_time(law.p, meff, v0); });
+    predict(run, "max_overlap", [&] { return power_law::max_overlap(law.p, meff, v0); });
+    predict(run, "residual_overlap", [&] { return power_law::residual_overlap(law.p, meff, v0); });
+    a.check_all_used(run.law);
+    run.result = go(law, b, v0, opt);
+  } else if (run.law == "extended_linear") {
+    collision::ExtendedLinearLaw law;
+    law.end_mode = read_end(a, ContactEnd::zero_overlap);
+    law.p.e_fit = read_fit(a, "--e-fit", "--e-coef", 'e');
+    law.p.tc_fit = read_fit(a, "--tc-fit", "--tc-coef", 't');
+    law.p.range = read_range(a);
+    extended::validate(law.p);
+    run.end = to_string(law.end_mode);
+    fit_params(P, "e_fit", law.p.e_fit);
+    fit_params(P, "tc_fit", law.p.tc_fit);
+    const auto c = extended::linear_coefficients(law.end_mode, law.p, meff, v0);
+    P.push_back({"k", c.k});
+    P.push_back({"gamma", c.gamma});
+    predict(run, "e", [&] { return extended::linear_restitution(law.p, v0); });
+    predict(run, "contact_time", [&] { return extended::linear_contact_time(law.p, v0); });
+    a.check_all_used(run.law);
+    run.result = go(law, b, v0, opt);
+  } else if (run.law == "extended_hertz") {
+    collision::ExtendedHertzLaw law;
+    law.end_mode = read_end(a, ContactEnd::zero_overlap);
+    if (a.has("--k")) {
+      law.p.k = a.positive("--k");
+    } else {
+      const double es = read_modulus(a);
+      law.p.k = hertz::stiffness(es, need_reff(b, "for the Hertz stiffness from the modulus"));
+      P.push_back({"Estar", es});
+    }
+    law.p.e_fit = read_fit(a, "--e-fit", "--e-coef", 'e');
+    law.p.range = read_range(a);
+    extended::validate(law.p);
+    run.end = to_string(law.end_mode);
+    P.push_back({"k", law.p.k});
+    fit_params(P, "e_fit", law.p.e_fit);
+    P.push_back({"alpha", extended::hertz_alpha(law.end_mode, law.p.e_fit, law.p.range, v0)});
+    predict(run, "e", [&] { return extended::hertz_restitution(law.p, v0); });
     a.check_all_used(run.law);
     run.result = go(law, b, v0, opt);
   } else {  // continuous_potential

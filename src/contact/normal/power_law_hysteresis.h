@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: power-law loading/unloading hysteresis (after Sadd, Tai & Shukla 1993; the form is the
+// reconstruction of physics_reference.md section 2.2.4).
+//
+//   loading      F = a_l xi^p                               (xi >= xi_max: new maximum)
+//   unloading    F = a_ul (xi - xi_f)^(p+q),   xi_f = xi_max - (a_l xi_max^p / a_ul)^(1/(p+q))
+//   reloading    along the unloading curve until it meets the loading curve, then on loading.
+//
+// xi_f is fixed by continuity at (xi_max, F_max). No attraction: the force is 0 below xi_f and
+// the contact ends there (ContactEnd::zero_force). With q > 0 the plastic residual xi_f is
+// negative for small maxima (xi_max^q < a_l/a_ul): such a contact is elastic (unloads on the
+// loading curve, e = 1); above that threshold it dissipates. p = 1, q = 0 is Walton-Braun with
+// constant k_ul = a_ul.
+//
+// Closed forms for a head-on impact at v0 (n = p + q, d = xi_max - xi_f):
+//   xi_max = ((p+1) m* v0^2 / (2 a_l))^(1/(p+1)),   F_max = a_l xi_max^p
+//   e^2 = W_unload / W_load = (d / xi_max) (p+1)/(n+1)        (1 if xi_f < 0)
+//   t_c = (xi_max / v0) I(p) + (d / (e v0)) I(n),  I(a) = sqrt(pi) G(1 + 1/(a+1)) / G(1/2 + 1/(a+1))
+//   q = 0: e = (a_l / a_ul)^(1/(2p)) for every v0.
+#pragma once
+
+#include <cmath>
+
+#include "../kinematics.h"
+#include "input_checks.h"
+
+namespace tdem {
+namespace power_law {
+
+template <class T>
+struct Params {
+  T a_load;    // a_l  [N/m^p]
+  T p;         // loading exponent > 0
+  T a_unload;  // a_ul [N/m^(p+q)]
+  T q;         // extra unloading exponent >= 0
+};
+
+inline constexpr HistorySlot history[] = {{"xi_max", false}};
+inline constexpr int history_size = 1;
+enum Slot { xi_max_slot = 0 };
+
+template <class T>
+TDEM_KERNEL NormalResult<T> force(const Params<T>& p, const NormalKinematics<T>& kin, T* hist,
+                                  bool update) noexcept {
+  const T xi = kin.overlap;
+  const T xi_max = hist[xi_max_slot];
+  if (xi <= T(0)) return {T(0), T(0), T(0), T(0)};
+  const T loading = p.a_load * std::pow(xi, p.p);
+  if (xi >= xi_max) {
+    if (update) hist[xi_max_slot] = xi;
+    return {loading, loading, p.p * loading / xi, T(0)};
+  }
+  const T n = p.p + p.q;
+  const T f_max = p.a_load * std::pow(xi_max, p.p);
+  const T xi_f = xi_max - std::pow(f_max / p.a_unload, T(1) / n);
+  if (xi_f < T(0)) return {loading, loading, p.p * loading / xi, T(0)};  // below the threshold: elastic
+  if (xi <= xi_f) return {T(0), T(0), T(0), T(0)};
+  const T unloading = p.a_unload * std::pow(xi - xi_f, n);
+  if (unloading >= loading) return {loading, loading, p.p * loading / xi, T(0)};
+  return {unloading, unloading, n * unloading / (xi - xi_f), T(0)};
+}
+
+// ---------------------------------------------------------------- checks and closed forms
+inline void validate(const Params<double>& p) {
+  checks::positive("loading coefficient a_l", p.a_load);
+  checks::positive("loading exponent p", p.p);
+  checks::positive("unloading coefficient a_ul", p.a_unload);
+  checks::non_negative("extra unloading exponent q", p.q);
+}
+
+inline double shape_integral(double a) {  // I(a) = int_0^1 (1 - x^(a+1))^(-1/2) dx
+  const double b = 1.0 / (a + 1.0);
+  return std::sqrt(M_PI) * std::tgamma(1.0 + b) / std::tgamma(0.5 + b);
+}
+
+inline double max_overlap(const Params<double>& p, double meff, double v0) {
+  validate(p);
+  checks::positive("effective mass m*", meff);
+  checks::positive("impact velocity v0", v0);
+  return std::pow((p.p + 1.0) * meff * v0 * v0 / (2.0 * p.a_load), 1.0 / (p.p + 1.0));
+}
+
+// Unloading amplitude d = xi_max - xi_f (> xi_max: elastic contact).
+inline double unloading_amplitude(const Params<double>& p, double xi_max) {
+  return std::pow(p.a_load * std::pow(xi_max, p.p) / p.a_unload, 1.0 / (p.p + p.q));
+}
+
+inline double restitution(const Params<double>& p, double meff, double v0) {
+  const double xm = max_overlap(p, meff, v0);
+  const double d = unloading_amplitude(p, xm);
+  if (d > xm) return 1.0;
+  return std::sqrt(d / xm * (p.p + 1.0) / (p.p + p.q + 1.0));
+}
+
+inline double contact_time(const Params<double>& p, double meff, double v0) {
+  const double xm = max_overlap(p, meff, v0);
+  const double d = unloading_amplitude(p, xm);
+  const double t_load = xm / v0 * shape_integral(p.p);
+  if (d > xm) return 2.0 * t_load;
+  return t_load + d / (restitution(p, meff, v0) * v0) * shape_integral(p.p + p.q);
+}
+
+inline double residual_overlap(const Params<double>& p, double meff, double v0) {
+  const double xm = max_overlap(p, meff, v0);
+  const double d = unloading_amplitude(p, xm);
+  return d > xm ? 0.0 : xm - d;
+}
+
+// q = 0: a_ul for restitution e (independent of v0).
+inline Params<double> from_restitution(double a_l, double p, double e) {
+  checks::restitution(e);
+  return {a_l, p, a_l / std::pow(e, 2.0 * p), 0.0};
+}
+
+}  // namespace power_law
+}  // namespace tdem
