@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "collision/conversions.h"
 #include "collision/head_on.h"
 
 namespace {
@@ -49,6 +50,8 @@ Laws and their parameters (coefficients, or measurable quantities):
       --damping none|linear|kuwabara_kono|tsuji|general   (default none)
         linear: --gamma G [kg/s];  kuwabara_kono: --gamma G~ [kg/(s m^0.5)] | --A T [s];
         tsuji: --alpha A | --e E;  general: --gamma C --theta TH
+        linear, kuwabara_kono, general: --e E (< 1) instead of --gamma: the damping that gives
+        restitution E at this v0 (root search over the collision)
       --end zero_overlap|zero_force   (default zero_overlap)
   --law walton_braun      hysteretic linear law (contact ends at zero force)
       --kl K [--kul K] [--s S]    loading, unloading stiffness [N/m] (default k_l), slope [1/m]
@@ -432,19 +435,31 @@ Run run(Args& a) {
                               : "none";
     law.p.damp = 0.0;
     law.p.theta = 0.0;
+    // --e for the damping forms without a closed form: root search over the collision (conversions.h).
+    auto damping_from_e = [&](collision::HertzLaw& l) {
+      if (!a.has("--e")) return false;
+      a.forbid("--gamma", "together with --e (the damping follows from e)");
+      const double e = a.number("--e", 0.0, 1.0, true, true, "(0, 1)");
+      l.p.damp = collision::hertz_damping_for_restitution(l.damping, l.end_mode, l.p, b, v0, e);
+      return true;
+    };
     if (d == "none") {
       law.damping = hertz::Damping::linear;
     } else if (d == "linear") {
       law.damping = hertz::Damping::linear;
-      a.require("--gamma", "for --damping linear");
-      law.p.damp = a.non_negative("--gamma");
+      if (!damping_from_e(law)) {
+        a.require("--gamma", "(or --e) for --damping linear");
+        law.p.damp = a.non_negative("--gamma");
+      }
     } else if (d == "kuwabara_kono") {
       law.damping = hertz::Damping::kuwabara_kono;
-      if (a.has("--A")) {
+      if (damping_from_e(law)) {
+        a.forbid("--A", "together with --e");
+      } else if (a.has("--A")) {
         a.forbid("--gamma", "together with --A");
         law.p.damp = hertz::kuwabara_kono_damping(a.non_negative("--A"), law.p.k);
       } else {
-        a.require("--gamma", "(or --A) for --damping kuwabara_kono");
+        a.require("--gamma", "(or --A, or --e) for --damping kuwabara_kono");
         law.p.damp = a.non_negative("--gamma");
       }
     } else if (d == "tsuji") {
@@ -458,10 +473,12 @@ Run run(Args& a) {
       }
     } else {
       law.damping = hertz::Damping::general;
-      a.require("--gamma", "for --damping general");
       a.require("--theta", "for --damping general");
-      law.p.damp = a.non_negative("--gamma");
       law.p.theta = a.non_negative("--theta");
+      if (!damping_from_e(law)) {
+        a.require("--gamma", "(or --e) for --damping general");
+        law.p.damp = a.non_negative("--gamma");
+      }
     }
     hertz::validate(law.damping, law.p);
     run.end = to_string(law.end_mode);
