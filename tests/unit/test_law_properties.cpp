@@ -80,7 +80,7 @@ TEST(LawProperties, NoAttractionLawsNeverPull) {
   el.tc_fit.form = fits::Form::constant;
   el.tc_fit.c[0] = 1e-4;
   extended::HertzParams eh{1e9, el.e_fit, fits::Range{}};
-  double h_wb[1] = {0}, h_th[2] = {0, 0}, h_pl[1] = {0}, h_el[3] = {0, 0, 0}, h_eh[2] = {0, 0};
+  double h_wb[1] = {0}, h_th[2] = {0, 0}, h_pl[2] = {0, 0}, h_el[3] = {0, 0, 0}, h_eh[2] = {0, 0};
   for (int i = 0; i < 200000; ++i) {
     if (i % 1000 == 0) {  // a new contact now and then
       h_el[0] = h_el[1] = h_el[2] = 0.0;

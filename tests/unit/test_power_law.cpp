@@ -54,7 +54,7 @@ TEST(PowerLaw, ShapeIntegralMatchesQuadrature) {
 TEST(PowerLaw, LinearCaseIsWaltonBraun) {
   const pl::Params<double> p{1e5, 1.0, 4e5, 0.0};
   const auto wbp = tdem::walton_braun::constant(1e5, 4e5);
-  double h1[1] = {0.0}, h2[1] = {0.0};
+  double h1[pl::history_size] = {0.0, 0.0}, h2[1] = {0.0};
   for (double xi : {1e-4, 3e-4, 5e-4, 4.5e-4, 3e-4, 4e-4, 6e-4, 2e-4, 1e-4}) {
     const double a = F(p, xi, h1);
     const double b = tdem::walton_braun::force(wbp, tdem::NormalKinematics<double>{xi, 0.0, 1.0, 1.0}, h2, true).force;
@@ -105,7 +105,7 @@ TEST(PowerLaw, ElasticBelowThePlasticThreshold) {
 
 TEST(PowerLaw, DissipationAlongAPrescribedPathAndReload) {
   const pl::Params<double> p{2e8, 1.5, 5e10, 0.5};
-  double hist[1] = {0.0};
+  double hist[pl::history_size] = {0.0, 0.0};
   auto work = [&](double from, double to) {
     const int n = 400000;
     double w = 0.0, f0 = F(p, from, hist);
@@ -135,7 +135,7 @@ TEST(PowerLaw, DissipationAlongAPrescribedPathAndReload) {
 
 TEST(PowerLaw, ForceIsNeverNegativeOnARandomPath) {
   const pl::Params<double> p{2e8, 1.5, 5e10, 0.5};
-  double hist[1] = {0.0};
+  double hist[pl::history_size] = {0.0, 0.0};
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(0.0, 2e-4);
   for (int i = 0; i < 100000; ++i) {

@@ -35,28 +35,35 @@ struct Params {
   T q;         // extra unloading exponent >= 0
 };
 
-inline constexpr HistorySlot history[] = {{"xi_max", false}};
-inline constexpr int history_size = 1;
-enum Slot { xi_max_slot = 0 };
+// Per-contact history: the largest overlap and the force-zero overlap of its unloading curve
+// (stored when the maximum grows, so that unloading costs one pow()). Scalars: no sign flip.
+// xi_f < 0 marks a maximum below the plastic threshold (elastic unloading on the loading curve).
+inline constexpr HistorySlot history[] = {{"xi_max", false}, {"xi_f", false}};
+inline constexpr int history_size = 2;
+enum Slot { xi_max_slot = 0, xi_f_slot = 1 };
 
 template <class T>
 TDEM_KERNEL NormalResult<T> force(const Params<T>& p, const NormalKinematics<T>& kin, T* hist,
                                   bool update) noexcept {
   const T xi = kin.overlap;
-  const T xi_max = hist[xi_max_slot];
   if (xi <= T(0)) return {T(0), T(0), T(0), T(0)};
-  const T loading = p.a_load * std::pow(xi, p.p);
-  if (xi >= xi_max) {
-    if (update) hist[xi_max_slot] = xi;
+  const T n = p.p + p.q;
+  if (xi >= hist[xi_max_slot]) {  // loading: a new maximum
+    const T loading = p.a_load * std::pow(xi, p.p);
+    if (update) {
+      hist[xi_max_slot] = xi;
+      hist[xi_f_slot] = xi - std::pow(loading / p.a_unload, T(1) / n);
+    }
     return {loading, loading, p.p * loading / xi, T(0)};
   }
-  const T n = p.p + p.q;
-  const T f_max = p.a_load * std::pow(xi_max, p.p);
-  const T xi_f = xi_max - std::pow(f_max / p.a_unload, T(1) / n);
-  if (xi_f < T(0)) return {loading, loading, p.p * loading / xi, T(0)};  // below the threshold: elastic
+  const T xi_f = hist[xi_f_slot];
+  if (xi_f < T(0)) {  // below the plastic threshold: elastic
+    const T loading = p.a_load * std::pow(xi, p.p);
+    return {loading, loading, p.p * loading / xi, T(0)};
+  }
   if (xi <= xi_f) return {T(0), T(0), T(0), T(0)};
+  // With xi_f >= 0 and n >= p the unloading curve lies below the loading one on (xi_f, xi_max).
   const T unloading = p.a_unload * std::pow(xi - xi_f, n);
-  if (unloading >= loading) return {loading, loading, p.p * loading / xi, T(0)};
   return {unloading, unloading, n * unloading / (xi - xi_f), T(0)};
 }
 

@@ -18,6 +18,9 @@
 #include "normal_model_tdem_walton_braun.h"
 #include "normal_model_tdem_thornton.h"
 #include "normal_model_tdem_continuous_potential.h"
+#include "normal_model_tdem_power_law.h"
+#include "normal_model_tdem_extended_linear.h"
+#include "normal_model_tdem_extended_hertz.h"
 #include "tangential_model_tdem_cundall_strack.h"
 
 namespace tdem {
@@ -59,6 +62,9 @@ void register_hertz();
 void register_walton_braun();
 void register_thornton();
 void register_continuous_potential();
+void register_power_law();
+void register_extended_linear();
+void register_extended_hertz();
 
 }  // namespace detail
 }  // namespace liggghts

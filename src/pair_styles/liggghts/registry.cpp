@@ -79,6 +79,9 @@ const Names& names() {
     r.normal[TDEM_WALTON_BRAUN] = kNormalWaltonBraunName;
     r.normal[TDEM_THORNTON] = kNormalThorntonName;
     r.normal[TDEM_CONTINUOUS_POTENTIAL] = kNormalContinuousPotentialName;
+    r.normal[TDEM_POWER_LAW] = kNormalPowerLawName;
+    r.normal[TDEM_EXTENDED_LINEAR] = kNormalExtendedLinearName;
+    r.normal[TDEM_EXTENDED_HERTZ] = kNormalExtendedHertzName;
     r.tangential[TDEM_CUNDALL_STRACK] = kTangentialCundallStrackName;
     return r;
   }();
@@ -161,7 +164,9 @@ int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models
   }
   const int normal = static_cast<int>(hash & 63), tangential = static_cast<int>((hash >> 6) & 63);
   if ((normal == TDEM_LSD || normal == TDEM_HERTZ || normal == TDEM_WALTON_BRAUN ||
-       normal == TDEM_THORNTON || normal == TDEM_CONTINUOUS_POTENTIAL || tangential == TDEM_CUNDALL_STRACK) && !compiled().count(hash)) {
+       normal == TDEM_THORNTON || normal == TDEM_CONTINUOUS_POTENTIAL || normal == TDEM_POWER_LAW ||
+       normal == TDEM_EXTENDED_LINEAR || normal == TDEM_EXTENDED_HERTZ || tangential == TDEM_CUNDALL_STRACK) &&
+      !compiled().count(hash)) {
     std::string list;
     for (int64_t h : compiled()) list += "\n  " + describe(h);
     fail("gran contact model: the combination '" + describe(hash) +
@@ -186,6 +191,9 @@ void register_styles() {
   models.addNormalModel(kNormalWaltonBraunName, TDEM_WALTON_BRAUN);
   models.addNormalModel(kNormalThorntonName, TDEM_THORNTON);
   models.addNormalModel(kNormalContinuousPotentialName, TDEM_CONTINUOUS_POTENTIAL);
+  models.addNormalModel(kNormalPowerLawName, TDEM_POWER_LAW);
+  models.addNormalModel(kNormalExtendedLinearName, TDEM_EXTENDED_LINEAR);
+  models.addNormalModel(kNormalExtendedHertzName, TDEM_EXTENDED_HERTZ);
   models.addTangentialModel(kTangentialCundallStrackName, TDEM_CUNDALL_STRACK);
   detail::register_lsd_a();
   detail::register_lsd_b();
@@ -196,6 +204,9 @@ void register_styles() {
   detail::register_walton_braun();
   detail::register_thornton();
   detail::register_continuous_potential();
+  detail::register_power_law();
+  detail::register_extended_linear();
+  detail::register_extended_hertz();
 }
 
 void attach(LAMMPS_NS::LAMMPS* lmp) {

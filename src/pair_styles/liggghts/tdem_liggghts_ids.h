@@ -17,6 +17,9 @@ static const int TDEM_HERTZ = 41;           // model tdem/hertz
 static const int TDEM_WALTON_BRAUN = 42;    // model tdem/walton_braun
 static const int TDEM_THORNTON = 43;        // model tdem/thornton
 static const int TDEM_CONTINUOUS_POTENTIAL = 44;  // model tdem/continuous_potential
+static const int TDEM_POWER_LAW = 45;             // model tdem/power_law
+static const int TDEM_EXTENDED_LINEAR = 46;       // model tdem/extended_linear
+static const int TDEM_EXTENDED_HERTZ = 47;        // model tdem/extended_hertz
 
 }  // namespace ContactModels
 }  // namespace LIGGGHTS
@@ -29,5 +32,8 @@ inline constexpr const char* kNormalHertzName = "tdem/hertz";
 inline constexpr const char* kNormalWaltonBraunName = "tdem/walton_braun";
 inline constexpr const char* kNormalThorntonName = "tdem/thornton";
 inline constexpr const char* kNormalContinuousPotentialName = "tdem/continuous_potential";
+inline constexpr const char* kNormalPowerLawName = "tdem/power_law";
+inline constexpr const char* kNormalExtendedLinearName = "tdem/extended_linear";
+inline constexpr const char* kNormalExtendedHertzName = "tdem/extended_hertz";
 }  // namespace liggghts
 }  // namespace tdem

@@ -9,18 +9,20 @@
 #include "error.h"
 #include "fix_property_global.h"
 #include "lammps.h"
+#include "modify.h"
 
 namespace tdem {
 namespace liggghts {
 namespace {
 
-enum class Range { positive, non_negative, restitution };
+enum class Range { positive, non_negative, restitution, finite };
 
 const char* describe(Range r) {
   switch (r) {
     case Range::positive: return "> 0";
     case Range::non_negative: return ">= 0";
     case Range::restitution: return "in (0, 1]";
+    case Range::finite: return "finite";
   }
   return "";
 }
@@ -31,6 +33,7 @@ bool ok(Range r, double v) {
     case Range::positive: return v > 0.0;
     case Range::non_negative: return v >= 0.0;
     case Range::restitution: return v > 0.0 && v <= 1.0;
+    case Range::finite: return true;
   }
   return false;
 }
@@ -71,7 +74,61 @@ MatrixProperty* create_checked(PropertyRegistry& registry, const char* fix_name,
   return m;
 }
 
+ScalarProperty* create_checked_scalar(PropertyRegistry& registry, const char* fix_name, const char* caller,
+                                      Range r) {
+  LAMMPS_NS::FixPropertyGlobal* fix = registry.getGlobalProperty(fix_name, "property/global", "scalar", 0, 0, caller);
+  const double v = fix->compute_scalar();
+  if (!ok(r, v)) {
+    char buf[512];
+    std::snprintf(buf, sizeof buf, "%s: fix property/global %s has value %s; allowed: %s %s", caller, fix_name,
+                  format_value(v).c_str(), fix_name, describe(r));
+    registry.getLAMMPS()->error->all(FLERR, buf);
+  }
+  ScalarProperty* p = new ScalarProperty();
+  p->data = v;
+  return p;
+}
+
+template <int I>
+MatrixProperty* create_restitution_fit_i(PropertyRegistry& registry, const char* caller, bool) {
+  static const char* names[3] = {"restitutionFitC0", "restitutionFitC1", "restitutionFitC2"};
+  return create_checked(registry, names[I], caller, Range::finite);
+}
+template <int I>
+MatrixProperty* create_contact_time_fit_i(PropertyRegistry& registry, const char* caller, bool) {
+  static const char* names[2] = {"contactTimeFitC0", "contactTimeFitC1"};
+  return create_checked(registry, names[I], caller, Range::finite);
+}
+
 }  // namespace
+
+const MatrixPropertyCreator create_restitution_fit[3] = {&create_restitution_fit_i<0>, &create_restitution_fit_i<1>,
+                                                         &create_restitution_fit_i<2>};
+const MatrixPropertyCreator create_contact_time_fit[2] = {&create_contact_time_fit_i<0>,
+                                                          &create_contact_time_fit_i<1>};
+
+MatrixProperty* create_loading_coefficient(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "loadingCoefficient", caller, Range::positive);
+}
+MatrixProperty* create_loading_exponent(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "loadingExponent", caller, Range::positive);
+}
+MatrixProperty* create_unloading_coefficient(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "unloadingCoefficient", caller, Range::positive);
+}
+MatrixProperty* create_unloading_exponent_increment(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "unloadingExponentIncrement", caller, Range::non_negative);
+}
+ScalarProperty* create_impact_velocity_min(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked_scalar(registry, "impactVelocityMin", caller, Range::positive);
+}
+ScalarProperty* create_impact_velocity_max(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked_scalar(registry, "impactVelocityMax", caller, Range::positive);
+}
+
+bool has_scalar_property(LAMMPS_NS::LAMMPS* lmp, const char* fix_name, const char* caller) {
+  return lmp->modify->find_fix_property(fix_name, "property/global", "scalar", 0, 0, caller, false) != nullptr;
+}
 
 MatrixProperty* create_restitution(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked(registry, "coefficientRestitution", caller, Range::restitution);

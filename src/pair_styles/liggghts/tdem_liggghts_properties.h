@@ -25,6 +25,17 @@ inline constexpr const char* kPropUnloadingSlope = "tdem_unloadingStiffnessSlope
 inline constexpr const char* kPropYieldPressure = "tdem_yieldPressure";            // > 0
 inline constexpr const char* kPropPotentialEnergy = "tdem_potentialEnergy";        // > 0
 inline constexpr const char* kPropPotentialExponent = "tdem_potentialExponent";    // > 0
+inline constexpr const char* kPropLoadingCoefficient = "tdem_loadingCoefficient";  // > 0
+inline constexpr const char* kPropLoadingExponent = "tdem_loadingExponent";        // > 0
+inline constexpr const char* kPropUnloadingCoefficient = "tdem_unloadingCoefficient";  // > 0
+inline constexpr const char* kPropUnloadingExponentIncrement = "tdem_unloadingExponentIncrement";  // >= 0
+// fit coefficients: finite here; the ranges depend on the fit form (checked by the model)
+inline constexpr const char* kPropRestitutionFit[3] = {"tdem_restitutionFitC0", "tdem_restitutionFitC1",
+                                                       "tdem_restitutionFitC2"};
+inline constexpr const char* kPropContactTimeFit[2] = {"tdem_contactTimeFitC0", "tdem_contactTimeFitC1"};
+// scalars (fix property/global NAME scalar V), optional
+inline constexpr const char* kPropImpactVelocityMin = "tdem_impactVelocityMin";  // > 0
+inline constexpr const char* kPropImpactVelocityMax = "tdem_impactVelocityMax";  // > 0
 
 MatrixProperty* create_restitution(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_contact_time(PropertyRegistry& registry, const char* caller, bool);
@@ -37,6 +48,17 @@ MatrixProperty* create_unloading_slope(PropertyRegistry& registry, const char* c
 MatrixProperty* create_yield_pressure(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_potential_energy(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_potential_exponent(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_loading_coefficient(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_loading_exponent(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_unloading_coefficient(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_unloading_exponent_increment(PropertyRegistry& registry, const char* caller, bool);
+extern const MatrixPropertyCreator create_restitution_fit[3];
+extern const MatrixPropertyCreator create_contact_time_fit[2];
+ScalarProperty* create_impact_velocity_min(PropertyRegistry& registry, const char* caller, bool);
+ScalarProperty* create_impact_velocity_max(PropertyRegistry& registry, const char* caller, bool);
+
+// Is there a `fix property/global <fix_name> scalar ...`? (Optional scalar properties.)
+bool has_scalar_property(LAMMPS_NS::LAMMPS* lmp, const char* fix_name, const char* caller);
 
 // error->all unless the range check holds for every type pair 1..ntypes of a connected matrix.
 // kind: 0 -> value > 0, 1 -> value >= 0. `fix_name` is the fix property/global name.

@@ -220,12 +220,92 @@ CASES += [
      TH + " primitive type 1 zplane 0.0", [r"yieldPressure", r"value 0 ", r"> 0"]),
 ]
 
+GOOD_PL = {
+    "loadingCoefficient": "peratomtypepair 2 5e5 5e5 5e5 5e5",
+    "loadingExponent": "peratomtypepair 2 1.5 1.5 1.5 1.5",
+    "unloadingCoefficient": "peratomtypepair 2 2e6 2e6 2e6 2e6",
+    "unloadingExponentIncrement": "peratomtypepair 2 0 0 0 0",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+GOOD_EL = {
+    "restitutionFitC0": "peratomtypepair 2 0.9 0.9 0.9 0.9",
+    "restitutionFitC1": "peratomtypepair 2 1 1 1 1",
+    "restitutionFitC2": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+    "contactTimeFitC0": "peratomtypepair 2 5e-4 5e-4 5e-4 5e-4",
+    "contactTimeFitC1": "peratomtypepair 2 0.2 0.2 0.2 0.2",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+GOOD_EH = dict(GOOD_EL, youngsModulus="peratomtype 5e6 5e6", poissonsRatio="peratomtype 0.3 0.3")
+PL = "model tdem/power_law tangential tdem/cundall_strack"
+EL = "model tdem/extended_linear tangential tdem/cundall_strack"
+EH = "model tdem/extended_hertz tangential tdem/cundall_strack"
+
+CASES += [
+    ("tdem/power_law loadingExponent = 0", PL, props(GOOD_PL, loadingExponent="peratomtypepair 2 1.5 0 0 1.5"), None,
+     [r"model tdem/power_law", r"loadingExponent", r"value 0 ", r"types 1 2", r"> 0"]),
+    ("tdem/power_law loadingCoefficient < 0", PL,
+     props(GOOD_PL, loadingCoefficient="peratomtypepair 2 5e5 5e5 5e5 -1"), None,
+     [r"model tdem/power_law", r"loadingCoefficient", r"-1", r"types 2 2", r"> 0"]),
+    ("tdem/power_law negative unloadingExponentIncrement via wall", PL,
+     props(GOOD_PL, unloadingExponentIncrement="peratomtypepair 2 -0.5 0 0 0"), PL + " primitive type 1 zplane 0.0",
+     [r"model tdem/power_law", r"unloadingExponentIncrement", r"-0\.5", r"types 1 1", r">= 0"]),
+    ("tdem/power_law missing unloadingCoefficient", PL, props(GOOD_PL, unloadingCoefficient=None), None,
+     [r"unloadingCoefficient"]),
+    ("tdem/power_law has no limitForce", PL + " limitForce on", props(GOOD_PL), None, [r"limitForce"]),
+    ("tdem/extended_linear restitutionFit value", EL + " restitutionFit linear", props(GOOD_EL), None,
+     [r"model tdem/extended_linear", r"keyword 'restitutionFit'", r"'linear'",
+      r"allowed values: constant \| rational \| power"]),
+    ("tdem/extended_linear contactTimeFit rational", EL + " contactTimeFit rational", props(GOOD_EL), None,
+     [r"model tdem/extended_linear", r"keyword 'contactTimeFit'", r"'rational'", r"allowed values: constant \| power"]),
+    ("tdem/extended_linear limitForce value", EL + " limitForce true", props(GOOD_EL), None,
+     [r"model tdem/extended_linear", r"keyword 'limitForce'", r"'true'", r"allowed values: off \| on"]),
+    ("tdem/extended_linear rational without restitutionFitC2", EL, props(GOOD_EL, restitutionFitC2=None), None,
+     [r"restitutionFitC2"]),
+    ("tdem/extended_linear power tc fit without contactTimeFitC1", EL + " contactTimeFit power",
+     props(GOOD_EL, contactTimeFitC1=None), None, [r"contactTimeFitC1"]),
+    ("tdem/extended_linear rational C0 <= 0", EL, props(GOOD_EL, restitutionFitC0="peratomtypepair 2 0.9 -0.9 -0.9 0.9"),
+     None, [r"model tdem/extended_linear", r"types 1 2", r"restitutionFitC0", r"-0\.9", r"\(0, inf\)"]),
+    ("tdem/extended_linear rational C1 < 0", EL, props(GOOD_EL, restitutionFitC1="peratomtypepair 2 1 1 1 -2"),
+     None, [r"types 2 2", r"restitutionFitC1", r"-2", r"\[0, inf\)"]),
+    ("tdem/extended_linear constant e > 1", EL + " restitutionFit constant",
+     props(GOOD_EL, restitutionFitC0="peratomtypepair 2 0.9 0.9 0.9 1.5"), None,
+     [r"restitutionFitC0", r"restitutionFit constant", r"1\.5", r"types 2 2", r"\(0, 1\]"]),
+    ("tdem/extended_linear constant contact time <= 0", EL + " contactTimeFit constant",
+     props(GOOD_EL, contactTimeFitC0="peratomtypepair 2 0 5e-4 5e-4 5e-4"), None,
+     [r"contactTimeFitC0", r"= 0 ", r"types 1 1", r"\(0, inf\)"]),
+    ("tdem/extended_linear power C0 <= 0 via wall", EL,
+     props(GOOD_EL, contactTimeFitC0="peratomtypepair 2 -5e-4 5e-4 5e-4 5e-4"), EL + " primitive type 1 zplane 0.0",
+     [r"model tdem/extended_linear", r"contactTimeFitC0", r"-0\.0005", r"\(0, inf\)"]),
+    ("tdem/extended_linear impactVelocityMin <= 0", EL,
+     props(GOOD_EL, impactVelocityMin="scalar -1"), None, [r"impactVelocityMin", r"-1", r"> 0"]),
+    ("tdem/extended_linear impactVelocityMax < impactVelocityMin", EL,
+     props(GOOD_EL, impactVelocityMin="scalar 2", impactVelocityMax="scalar 1"), None,
+     [r"model tdem/extended_linear", r"impactVelocityMax = 1 ", r"\[impactVelocityMin, inf\)"]),
+    ("tdem/extended_hertz restitutionFit value", EH + " restitutionFit cubic", props(GOOD_EH), None,
+     [r"model tdem/extended_hertz", r"keyword 'restitutionFit'", r"'cubic'",
+      r"allowed values: constant \| rational \| power"]),
+    ("tdem/extended_hertz has no contactTimeFit", EH + " contactTimeFit power", props(GOOD_EH), None,
+     [r"contactTimeFit"]),
+    ("tdem/extended_hertz power exponent < 0", EH + " restitutionFit power",
+     props(GOOD_EH, restitutionFitC1="peratomtypepair 2 0.2 -0.2 -0.2 0.2"), None,
+     [r"model tdem/extended_hertz", r"types 1 2", r"restitutionFitC1", r"-0\.2", r"\[0, inf\)"]),
+    ("tdem/extended_hertz missing youngsModulus", EH, props(GOOD_EH, youngsModulus=None), None,
+     [r"youngsModulus"]),
+    ("tdem/extended_hertz negative tangentialStiffnessRatio", EH,
+     props(GOOD_EH, tangentialStiffnessRatio="peratomtypepair 2 0.3 0.3 0.3 -1"), None,
+     [r"model tdem/extended_hertz", r"tangentialStiffnessRatio", r"-1", r">= 0"]),
+]
+
 
 def main():
-    args = T.parse_args()
+    args = T.parse_args(lambda p: p.add_argument("--only", default=None, help="run the cases whose name contains this"))
     checks = T.Checks()
     d = T.workdir(args, "tdem_lig_bad_input")
     for i, (name, pair_args, properties, wall_args, patterns) in enumerate(CASES):
+        if args.only and args.only not in name:
+            continue
         r = T.run(args.tdem, scene(pair_args, properties, wall_args), d, "bad%d" % i, check=False, timeout=60)
         out = r.stdout + r.stderr
         err = [l for l in out.splitlines() if "ERROR" in l]

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: `model tdem/extended_linear` -- the linear spring-dashpot whose k and gamma follow a measured
+// e(v0) and t_c(v0) (src/contact/normal/extended.h, physics_reference.md 2.6) as a LIGGGHTS
+// NormalModel. Adapter only.
+//
+//   pair_style gran model tdem/extended_linear [tangential ...] [restitutionFit constant|rational|power]
+//              [contactTimeFit constant|power] [limitForce off|on]      (defaults rational, power, off)
+//
+// Properties (peratomtypepair): restitutionFitC0 [C1 [C2]] and contactTimeFitC0 [C1] (as many as the
+// forms need; tdem_liggghts_fits.h), tangentialStiffnessRatio kappa (kt = kappa k(v0)); optional
+// scalars impactVelocityMin, impactVelocityMax [m/s] (defaults 1e-3, 1e3). At first touch the
+// impact velocity v0 = xi' (clamped) gives e(v0), t_c(v0) and from them k, gamma for m* in the
+// convention of limitForce; they are kept for the whole contact. Per-contact history: v0, k, gamma
+// (scalars, no sign flip), reset when the particles separate.
+#pragma once
+
+#include <stdexcept>
+
+#include "contact_models.h"
+#include "normal_model_base.h"
+#include "global_properties.h"
+#include "force.h"
+#include "atom.h"
+#include "error.h"
+
+#include "tdem_liggghts_apply.h"
+#include "contact/normal/extended.h"
+#include "tdem_liggghts_fits.h"
+#include "tdem_liggghts_ids.h"
+#include "tdem_liggghts_properties.h"
+#include "tdem_liggghts_settings.h"
+
+namespace LIGGGHTS {
+namespace ContactModels {
+
+template <>
+class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
+ public:
+  NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
+      : NormalModelBase(lmp, hsetup, c) {
+    history_offset_ = hsetup->add_history_value("ext_v0", "0");
+    const int k = hsetup->add_history_value("ext_k", "0");
+    const int g = hsetup->add_history_value("ext_gamma", "0");
+    if (k != history_offset_ + 1 || g != history_offset_ + 2)
+      error->all(FLERR, "model tdem/extended_linear: history values v0, k, gamma are not adjacent");
+  }
+
+  void registerSettings(Settings& settings) {
+    tdem::liggghts::register_enum(settings, "model tdem/extended_linear", "restitutionFit", e_form_,
+                                  tdem::liggghts::restitution_fit_words(), 1);
+    tdem::liggghts::register_enum(settings, "model tdem/extended_linear", "contactTimeFit", tc_form_,
+                                  tdem::liggghts::contact_time_fit_words(), 1);
+    tdem::liggghts::register_on_off(settings, "model tdem/extended_linear", "limitForce", limit_force_, false);
+  }
+  void postSettings(IContactHistorySetup*, ContactModelBase*) {}
+
+  void connectToProperties(PropertyRegistry& registry) {
+    static const char* caller = "model tdem/extended_linear";
+    if (force->cg_active())
+      error->all(FLERR, "model tdem/extended_linear does not support coarse-graining (cg factor != 1)");
+    end_ = limit_force_ ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
+    const tdem::fits::Form ef = tdem::liggghts::restitution_form(e_form_);
+    const tdem::fits::Form tf = tdem::liggghts::contact_time_form(tc_form_);
+    const int n = atom->ntypes;
+    coef_.resize(n);
+    const tdem::liggghts::FitMatrices em = tdem::liggghts::connect_restitution_fit(registry, ef, caller);
+    const tdem::liggghts::FitMatrices tm = tdem::liggghts::connect_contact_time_fit(registry, tf, caller);
+    const tdem::fits::Range range = tdem::liggghts::connect_range(lmp, registry, caller);
+    tdem::liggghts::check_range(lmp, range, caller);
+    double** kappa = nullptr;
+    registry.registerProperty(tdem::liggghts::kPropStiffnessRatio, &tdem::liggghts::create_stiffness_ratio);
+    registry.connect(tdem::liggghts::kPropStiffnessRatio, kappa, caller);
+    for (int i = 1; i <= n; ++i)
+      for (int j = 1; j <= n; ++j) {
+        PairCoefficients& pc = coef_(i, j);
+        pc.p.e_fit = tdem::liggghts::fit_of(ef, em, i, j);
+        pc.p.tc_fit = tdem::liggghts::fit_of(tf, tm, i, j);
+        pc.p.range = range;
+        pc.kappa = kappa[i][j];
+        try {
+          tdem::extended::validate(pc.p);
+        } catch (const std::exception& ex) {
+          tdem::liggghts::fail_fit(lmp, caller, i, j, ex);
+        }
+      }
+  }
+
+  inline double stressStrainExponent() { return 1.; }
+
+  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
+    double* const hist = &sidata.contact_history[history_offset_];
+    const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, 0.0};
+    const bool update = sidata.computeflag && sidata.shearupdate;
+    const tdem::NormalResult<double> r =
+        end_ == tdem::ContactEnd::zero_force
+            ? tdem::extended::linear_force<tdem::ContactEnd::zero_force>(pc.p, kin, hist, update)
+            : tdem::extended::linear_force<tdem::ContactEnd::zero_overlap>(pc.p, kin, hist, update);
+    tdem::liggghts::apply_normal_result(sidata, r.force, r.stiffness, pc.kappa * r.stiffness, r.damping, i_forces,
+                                        j_forces);
+  }
+
+  void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {
+    if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (scdata.contact_history)  // contact over: the next touch takes new coefficients
+      for (int k = 0; k < tdem::extended::linear_history_size; ++k) scdata.contact_history[history_offset_ + k] = 0.0;
+  }
+  void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
+  void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
+
+ private:
+  struct PairCoefficients {
+    tdem::extended::LinearParams p;
+    double kappa;
+  };
+  tdem::liggghts::PairTable<PairCoefficients> coef_;
+  int history_offset_ = 0;
+  int e_form_ = 1;   // rational
+  int tc_form_ = 1;  // power
+  bool limit_force_ = false;
+  tdem::ContactEnd end_ = tdem::ContactEnd::zero_overlap;
+};
+
+}  // namespace ContactModels
+}  // namespace LIGGGHTS
