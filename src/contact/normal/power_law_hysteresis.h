@@ -42,6 +42,24 @@ inline constexpr HistorySlot history[] = {{"xi_max", false}, {"xi_f", false}};
 inline constexpr int history_size = 2;
 enum Slot { xi_max_slot = 0, xi_f_slot = 1 };
 
+// x^a with the common exponents of this law (1, 3/2, 2) without pow(); predictable branches.
+template <class T>
+TDEM_KERNEL T power(T x, T a) noexcept {
+  if (a == T(1.5)) return x * std::sqrt(x);
+  if (a == T(1)) return x;
+  if (a == T(2)) return x * x;
+  return std::pow(x, a);
+}
+
+// x^(1/a) for the same exponents.
+template <class T>
+TDEM_KERNEL T root(T x, T a) noexcept {
+  if (a == T(1.5)) return std::cbrt(x * x);
+  if (a == T(1)) return x;
+  if (a == T(2)) return std::sqrt(x);
+  return std::pow(x, T(1) / a);
+}
+
 template <class T>
 TDEM_KERNEL NormalResult<T> force(const Params<T>& p, const NormalKinematics<T>& kin, T* hist,
                                   bool update) noexcept {
@@ -49,21 +67,21 @@ TDEM_KERNEL NormalResult<T> force(const Params<T>& p, const NormalKinematics<T>&
   if (xi <= T(0)) return {T(0), T(0), T(0), T(0)};
   const T n = p.p + p.q;
   if (xi >= hist[xi_max_slot]) {  // loading: a new maximum
-    const T loading = p.a_load * std::pow(xi, p.p);
+    const T loading = p.a_load * power(xi, p.p);
     if (update) {
       hist[xi_max_slot] = xi;
-      hist[xi_f_slot] = xi - std::pow(loading / p.a_unload, T(1) / n);
+      hist[xi_f_slot] = xi - root(loading / p.a_unload, n);
     }
     return {loading, loading, p.p * loading / xi, T(0)};
   }
   const T xi_f = hist[xi_f_slot];
   if (xi_f < T(0)) {  // below the plastic threshold: elastic
-    const T loading = p.a_load * std::pow(xi, p.p);
+    const T loading = p.a_load * power(xi, p.p);
     return {loading, loading, p.p * loading / xi, T(0)};
   }
   if (xi <= xi_f) return {T(0), T(0), T(0), T(0)};
   // With xi_f >= 0 and n >= p the unloading curve lies below the loading one on (xi_f, xi_max).
-  const T unloading = p.a_unload * std::pow(xi - xi_f, n);
+  const T unloading = p.a_unload * power(xi - xi_f, n);
   return {unloading, unloading, n * unloading / (xi - xi_f), T(0)};
 }
 

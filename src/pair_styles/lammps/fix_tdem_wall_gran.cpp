@@ -50,7 +50,7 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
   dt = update->dt;
 
   int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
-  size_history = tdem_lammps::history_size(law.mode);  // 3, or 4 with walton_braun (xi_max)
+  size_history = tdem_lammps::history_size(law.mode);  // 3 + the normal law's slots
 
   // wall geometry
   if (iarg >= narg)
@@ -270,7 +270,7 @@ template <int M, int E, int S> __attribute__((flatten, noinline)) void FixTDEMWa
     double *shear = history_one[i];
     if (rsq > rad * rad) {
       shear[0] = shear[1] = shear[2] = 0.0;
-      for (int m = tdem_lammps::TANGENTIAL_HISTORY; m < size_history; m++) shear[m] = 0.0;
+      tdem_lammps::clear_law_history(shear, size_history);
       continue;
     }
 

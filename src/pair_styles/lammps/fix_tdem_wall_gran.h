@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LAMMPS: fix tdem/wall/gran, a frictional wall with the tdem normal laws (lsd,
-// hertz, walton_braun, thornton) + cundall_strack.
+// hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz) + cundall_strack.
 //
 //   fix ID group tdem/wall/gran normal LAW ... tangential cundall_strack ... [options]
 //       wallstyle args [wiggle dim A T | shear dim V]
 //   wallstyle: xplane lo hi | yplane lo hi | zplane lo hi (NULL = no wall) | zcylinder R
 //
 // The wall has infinite mass and radius: m* is the sphere mass (fix rigid body mass if any).
-// hertz/thornton: R* = sphere radius, E* from sphere and wall materials (E NU [E2 NU2]).
-// Per-atom history (tangential spring; + xi_max for walton_braun, + xi_max, f_max for
-// thornton) migrates with the atoms and is written to restarts.
+// hertz/thornton/extended_hertz: R* = sphere radius, E* from sphere and wall materials
+// (E NU [E2 NU2]). Per-atom history (tangential spring; + xi_max for walton_braun and
+// power_law, + xi_max, f_max for thornton, + v0, k, gamma for extended_linear, + v0, alpha for
+// extended_hertz; power_law: the slots of tdem::power_law) migrates with the atoms and is
+// written to restarts.
 
 #ifdef FIX_CLASS
 // clang-format off

@@ -3,7 +3,9 @@
 //
 // Bookkeeping follows the LAMMPS conventions for granular pair styles with history: a
 // FixNeighHistory stores 3 values (the tangential spring elongation) per neighbour with a
-// touch flag (4 or 5 when a type pair uses walton_braun or thornton: xi_max, f_max), the
+// touch flag (+1 with walton_braun: xi_max; +2 with thornton: xi_max, f_max; power_law: the
+// slots of tdem::power_law;
+// +3 with extended_linear: v0, k, gamma; +2 with extended_hertz: v0, alpha), the
 // pair asks for a size neighbour list with history, meff uses fix freeze and
 // fix rigid body masses, and the cutoff is the sum of the largest radii (including particles
 // a fix pour / fix deposit will insert).
@@ -115,8 +117,9 @@ void PairTDEMGran::compute(int eflag, int vflag)
     comm->forward_comm_pair(this);
   }
 
-  // compile-time paths only with the 3-value (tangential spring) history
-  tdem_lammps::dispatch(uniform && size_history == tdem_lammps::TANGENTIAL_HISTORY, umode, uend,
+  // compile-time paths when every type pair has the same law (and so the history size of
+  // that law)
+  tdem_lammps::dispatch(uniform && size_history == tdem_lammps::history_size(umode), umode, uend,
                         uslip, PairRunner{this, eflag, vflag});
 
   if (vflag_fdotr) virial_fdotr_compute();
@@ -124,7 +127,7 @@ void PairTDEMGran::compute(int eflag, int vflag)
 
 // flatten: inline the kernels into each instantiation (the inliner's size limits would keep
 // cundall_strack::force out of line, which costs ~10 % of the pair time); noinline keeps the
-// 13 instantiations out of the dispatcher.
+// 19 instantiations out of the dispatcher.
 template <int M, int E, int S>
 __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*vflag*/)
 {
@@ -143,8 +146,8 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   const int newton_pair = force->newton_pair;
   const int ntp1 = atom_ntypes + 1;
   const LawCoeffs *lawtab = law.data();
-  // history values per neighbour: 3 on the compile-time (lsd) paths, else size_history
-  const int hsize = M >= 0 ? tdem_lammps::TANGENTIAL_HISTORY : size_history;
+  // history values per neighbour: fixed on the compile-time paths, else size_history
+  const int hsize = M >= 0 ? tdem_lammps::history_size(M) : size_history;
 
   const int inum = list->inum;
   int *ilist = list->ilist;
@@ -183,7 +186,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         shear[0] = 0.0;
         shear[1] = 0.0;
         shear[2] = 0.0;
-        for (int m = tdem_lammps::TANGENTIAL_HISTORY; m < hsize; m++) shear[m] = 0.0;
+        tdem_lammps::clear_law_history(shear, hsize);
         continue;
       }
 
@@ -337,8 +340,9 @@ void PairTDEMGran::init_style()
                "pair tdem/gran: the pair_coeff laws now need " + std::to_string(need_history) +
                    " history values per contact, but the history was created with " +
                    std::to_string(size_history) +
-                   "; changing between laws with and without history (walton_braun) after a "
-                   "run is not supported (use clear, or define walton_braun from the start)");
+                   "; changing to a law with a different history size (walton_braun, thornton, "
+                   "power_law, extended_linear, extended_hertz) after a run is not supported "
+                   "(use clear, or define that law from the start)");
   // the tangential spring flips sign with the pair order, xi_max does not
   nondefault_history_transfer = size_history > tdem_lammps::TANGENTIAL_HISTORY ? 1 : 0;
 
@@ -413,7 +417,8 @@ double PairTDEMGran::init_one(int i, int j)
   if (!allocated) allocate();
   if (!setflag[i][j] && setflag[i][i] && setflag[j][j] &&
       (coeffs(i, i).mode == tdem_lammps::MODE_HERTZ ||
-       coeffs(i, i).mode == tdem_lammps::MODE_THORNTON) &&
+       coeffs(i, i).mode == tdem_lammps::MODE_THORNTON ||
+       coeffs(i, i).mode == tdem_lammps::MODE_EXT_HERTZ) &&
       coeffs(j, j).mode == coeffs(i, i).mode) {
     // normal hertz mixes the materials: 1/E* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j, with the
     // material of type I from pair_coeff I I and of type J from pair_coeff J J; everything
@@ -421,13 +426,16 @@ double PairTDEMGran::init_one(int i, int j)
     const LawCoeffs &a = coeffs(i, i), &b = coeffs(j, j);
     if (a.hdamp != b.hdamp || a.hgamma != b.hgamma || a.htheta != b.htheta || a.he != b.he ||
         a.th_py != b.th_py ||
+        (a.mode == tdem_lammps::MODE_EXT_HERTZ &&
+         (a.ext.e_fit.form != b.ext.e_fit.form || a.ext.e_fit.c[0] != b.ext.e_fit.c[0] ||
+          a.ext.e_fit.c[1] != b.ext.e_fit.c[1] || a.ext.e_fit.c[2] != b.ext.e_fit.c[2] ||
+          a.ext.range.v_min != b.ext.range.v_min || a.ext.range.v_max != b.ext.range.v_max)) ||
         a.kappa != b.kappa || a.mu != b.mu || a.end != b.end || a.slip != b.slip)
       error->all(FLERR,
                  "pair tdem/gran: no pair_coeff for type pair " + std::to_string(i) + " " +
                      std::to_string(j) +
-                     " and the normal hertz/thornton laws of types I I and J J differ in more "
-                     "than the material "
-                     "(E, NU); set this type pair");
+                     " and the normal hertz/thornton/extended_hertz laws of types I I and J J "
+                     "differ in more than the material (E, NU); set this type pair");
     LawCoeffs c = a;
     c.E2 = b.E1;
     c.nu2 = b.nu1;
@@ -524,9 +532,12 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 
 /* ---------------------------------------------------------------------- */
 
+// Restart data: a version number, then per type pair I <= J the setflag and, if set, the
+// LawCoeffs bytes. Version 3 (power_law, extended_linear, extended_hertz) appended members to
+// LawCoeffs; version 2 files hold the first LAW_COEFFS_V2_SIZE bytes and are still read.
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 2;
+  const int version = 3;
   fwrite(&version, sizeof(int), 1, fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
@@ -542,17 +553,18 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version != 2)
+  if (version != 2 && version != 3)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads version 2)");
+                          " cannot be read (this build reads versions 2 and 3)");
+  const size_t nbytes = version == 3 ? sizeof(LawCoeffs) : tdem_lammps::LAW_COEFFS_V2_SIZE;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (setflag[i][j]) {
         LawCoeffs c;
-        if (me == 0) utils::sfread(FLERR, &c, sizeof(LawCoeffs), 1, fp, nullptr, error);
-        MPI_Bcast(&c, sizeof(LawCoeffs), MPI_BYTE, 0, world);
+        if (me == 0) utils::sfread(FLERR, &c, nbytes, 1, fp, nullptr, error);
+        MPI_Bcast(&c, nbytes, MPI_BYTE, 0, world);
         coeffs(i, j) = c;
         coeffs(j, i) = c;
       }

@@ -9,6 +9,11 @@
 //                  tangential cundall_strack KAPPA MU [options]
 //   pair_coeff I J normal walton_braun KL KUL [S] tangential cundall_strack KAPPA MU [options]
 //   pair_coeff I J normal thornton E NU [E2 NU2] PY tangential cundall_strack KAPPA MU [options]
+//   pair_coeff I J normal power_law AL P AUL [Q] tangential cundall_strack KAPPA MU [options]
+//   pair_coeff I J normal extended_linear e_fit FORM C0 [C1 [C2]] tc_fit FORM C0 [C1]
+//                  [v_min V] [v_max V] tangential cundall_strack KAPPA MU [options]
+//   pair_coeff I J normal extended_hertz E NU [E2 NU2] e_fit FORM C0 [C1 [C2]] [v_min V] [v_max V]
+//                  tangential cundall_strack KAPPA MU [options]
 //   options: damping mass|absolute (lsd stiffness), limit_force no|yes, slip spring_dashpot|spring
 //
 // Derives from Pair and uses only FixNeighHistory and NeighRequest (not the GRANULAR classes),

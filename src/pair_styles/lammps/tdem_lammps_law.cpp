@@ -50,7 +50,8 @@ void need(LAMMPS *lmp, const std::string &where, const std::string &what, const 
 int available(int narg, char **arg, int iarg) {
   static const char *const keywords[] = {"normal", "tangential", "damping", "limit_force",
                                          "slip", "xplane", "yplane", "zplane", "zcylinder",
-                                         "wiggle", "shear", nullptr};
+                                         "wiggle", "shear", "e_fit", "tc_fit", "v_min",
+                                         "v_max", nullptr};
   int n = 0;
   for (; iarg + n < narg; ++n) {
     for (int k = 0; keywords[k]; ++k)
@@ -145,6 +146,151 @@ int parse_hertz(LAMMPS *lmp, const std::string &where, int narg, char **arg, int
   return iarg;
 }
 
+
+std::string coefficient_names(int n) {
+  return n == 1 ? "C0" : n == 2 ? "C0 C1" : "C0 C1 C2";
+}
+
+// e_fit FORM C0 [C1 [C2]] or tc_fit FORM C0 [C1] at arg[iarg] (the keyword); what = 'e' | 't'
+int parse_fit(LAMMPS *lmp, const std::string &where, const std::string &law, int narg, char **arg,
+              int iarg, char what, tdem::fits::Fit &fit) {
+  const std::string key = arg[iarg];
+  const char *allowed = what == 'e' ? "constant C0, rational C0 C1 C2, power C0 C1"
+                                    : "constant C0, power C0 C1";
+  if (iarg + 1 >= narg)
+    fail(lmp, where, "normal " + law + " " + key + " needs a form; allowed: " + allowed);
+  const std::string form = arg[iarg + 1];
+  if (!tdem::fits::parse(form, fit.form) || (what == 't' && fit.form == tdem::fits::Form::rational))
+    fail(lmp, where, "normal " + law + " " + key + " form '" + form + "' is unknown; allowed: " +
+                         allowed);
+  iarg += 2;
+  const int want = tdem::fits::coefficient_count(fit.form, what);
+  const int have = available(narg, arg, iarg);
+  if (have != want)
+    fail(lmp, where,
+         "normal " + law + " " + key + " " + form + " needs " + std::to_string(want) + " value" +
+             (want == 1 ? "" : "s") + " (" + coefficient_names(want) + "), got " +
+             std::to_string(have));
+  for (int k = 0; k < want; ++k)
+    fit.c[k] = number(lmp, where, "normal " + law + " " + key + " " + form + " C" + std::to_string(k),
+                      arg[iarg + k]);
+  try {
+    if (what == 'e') tdem::fits::validate_restitution(fit);
+    else tdem::fits::validate_contact_time(fit);
+  } catch (const std::exception &ex) {
+    std::string vals;
+    for (int k = 0; k < want; ++k)
+      vals += std::string(k ? ", " : "") + "C" + std::to_string(k) + " = " + num(fit.c[k]);
+    fail(lmp, where, "normal " + law + " " + key + " " + form + " (" + vals + "): " + ex.what());
+  }
+  return iarg + want;
+}
+
+// [v_min V] [v_max V] (any order); validates the range
+int parse_range(LAMMPS *lmp, const std::string &where, const std::string &law, int narg, char **arg,
+                int iarg, tdem::fits::Range &range) {
+  range = tdem::fits::Range();
+  while (iarg < narg && (strcmp(arg[iarg], "v_min") == 0 || strcmp(arg[iarg], "v_max") == 0)) {
+    const std::string key = arg[iarg];
+    const int have = available(narg, arg, iarg + 1);
+    if (have != 1)
+      fail(lmp, where, "normal " + law + " " + key + " needs 1 value (impact velocity), got " +
+                           std::to_string(have));
+    const double v = number(lmp, where, "normal " + law + " " + key, arg[iarg + 1]);
+    if (key == "v_min") range.v_min = v;
+    else range.v_max = v;
+    iarg += 2;
+  }
+  try {
+    tdem::fits::validate_range(range);
+  } catch (const std::exception &ex) {
+    fail(lmp, where, "normal " + law + " v_min = " + num(range.v_min) + ", v_max = " +
+                         num(range.v_max) + ": " + ex.what() +
+                         " (allowed: 0 < v_min <= v_max)");
+  }
+  return iarg;
+}
+
+// normal power_law AL P AUL [Q]
+int parse_power_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
+                    LawCoeffs &c) {
+  c.mode = MODE_POWER_LAW;
+  const int n = available(narg, arg, iarg);
+  if (n != 3 && n != 4)
+    fail(lmp, where, "normal power_law needs 3 or 4 values (AL P AUL [Q]), got " + std::to_string(n));
+  c.pl.a_load = number(lmp, where, "normal power_law AL", arg[iarg]);
+  c.pl.p = number(lmp, where, "normal power_law P", arg[iarg + 1]);
+  c.pl.a_unload = number(lmp, where, "normal power_law AUL", arg[iarg + 2]);
+  c.pl.q = n == 4 ? number(lmp, where, "normal power_law Q", arg[iarg + 3]) : 0.0;
+  positive(lmp, where, "normal power_law AL (loading coefficient a_l)", c.pl.a_load);
+  positive(lmp, where, "normal power_law P (loading exponent)", c.pl.p);
+  positive(lmp, where, "normal power_law AUL (unloading coefficient a_ul)", c.pl.a_unload);
+  non_negative(lmp, where, "normal power_law Q (extra unloading exponent)", c.pl.q);
+  try {
+    tdem::power_law::validate(c.pl);
+  } catch (const std::exception &ex) {
+    fail(lmp, where, std::string("normal power_law: ") + ex.what());
+  }
+  return iarg + n;
+}
+
+// normal extended_linear e_fit FORM C.. tc_fit FORM C.. [v_min V] [v_max V]
+// normal extended_hertz E NU [E2 NU2] e_fit FORM C.. [v_min V] [v_max V]
+int parse_extended(LAMMPS *lmp, const std::string &where, bool hertz, int narg, char **arg,
+                   int iarg, LawCoeffs &c) {
+  const std::string law = hertz ? "extended_hertz" : "extended_linear";
+  c.mode = hertz ? MODE_EXT_HERTZ : MODE_EXT_LINEAR;
+  c.ext = tdem::extended::LinearParams();
+  if (hertz) {
+    const int n = available(narg, arg, iarg);
+    if (n != 2 && n != 4)
+      fail(lmp, where,
+           "normal extended_hertz needs 2 values (E NU: both partners of one material) or 4 "
+           "values (E1 NU1 E2 NU2) before e_fit, got " + std::to_string(n));
+    c.E1 = number(lmp, where, "normal extended_hertz E", arg[iarg]);
+    positive(lmp, where, "normal extended_hertz E (Young's modulus)", c.E1);
+    c.nu1 = poisson(lmp, where, "normal extended_hertz NU (Poisson ratio)", arg[iarg + 1]);
+    if (n == 4) {
+      c.E2 = number(lmp, where, "normal extended_hertz E2", arg[iarg + 2]);
+      positive(lmp, where, "normal extended_hertz E2 (Young's modulus)", c.E2);
+      c.nu2 = poisson(lmp, where, "normal extended_hertz NU2 (Poisson ratio)", arg[iarg + 3]);
+    } else {
+      c.E2 = c.E1;
+      c.nu2 = c.nu1;
+    }
+    iarg += n;
+  } else if (available(narg, arg, iarg) != 0) {
+    fail(lmp, where, std::string("normal extended_linear expects 'e_fit FORM C..' next, got '") +
+                         arg[iarg] + "'");
+  }
+  if (iarg >= narg || strcmp(arg[iarg], "e_fit") != 0)
+    fail(lmp, where,
+         "normal " + law + " needs 'e_fit constant|rational|power C0 ..', got '" +
+             (iarg < narg ? arg[iarg] : "end of line") + "'");
+  iarg = parse_fit(lmp, where, law, narg, arg, iarg, 'e', c.ext.e_fit);
+  if (!hertz) {
+    if (iarg >= narg || strcmp(arg[iarg], "tc_fit") != 0)
+      fail(lmp, where,
+           std::string("normal extended_linear needs 'tc_fit constant|power C0 ..' after e_fit, "
+                       "got '") + (iarg < narg ? arg[iarg] : "end of line") + "'");
+    iarg = parse_fit(lmp, where, law, narg, arg, iarg, 't', c.ext.tc_fit);
+  } else {
+    // extended_hertz has no contact-time fit (t_c follows from Hertz); keep a valid placeholder
+    c.ext.tc_fit.form = tdem::fits::Form::constant;
+    c.ext.tc_fit.c[0] = 1.0;
+    if (iarg < narg && strcmp(arg[iarg], "tc_fit") == 0)
+      fail(lmp, where, "normal extended_hertz takes no tc_fit (its contact time follows from "
+                       "Hertz); allowed after e_fit: v_min V, v_max V");
+  }
+  iarg = parse_range(lmp, where, law, narg, arg, iarg, c.ext.range);
+  try {
+    tdem::extended::validate(c.ext);
+  } catch (const std::exception &ex) {
+    fail(lmp, where, "normal " + law + ": " + ex.what());
+  }
+  return iarg;
+}
+
 }  // namespace
 
 int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
@@ -155,11 +301,17 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   // ---- normal lsd stiffness KN GAMMAN | normal lsd restitution E TC | normal hertz ...
   if (iarg >= narg || strcmp(arg[iarg], "normal") != 0)
     fail(lmp, where,
-         std::string("expected 'normal lsd|hertz|walton_braun|thornton ...' first, got '") +
+         std::string("expected 'normal lsd|hertz|walton_braun|thornton|power_law|extended_linear|extended_hertz ...' first, got '") +
              (iarg < narg ? arg[iarg] : "end of line") + "'");
-  if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: lsd, hertz, walton_braun, thornton");
+  if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: lsd, hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz");
   if (strcmp(arg[iarg + 1], "hertz") == 0) {
     iarg = parse_hertz(lmp, where, narg, arg, iarg + 2, c);
+  } else if (strcmp(arg[iarg + 1], "power_law") == 0) {
+    iarg = parse_power_law(lmp, where, narg, arg, iarg + 2, c);
+  } else if (strcmp(arg[iarg + 1], "extended_linear") == 0) {
+    iarg = parse_extended(lmp, where, false, narg, arg, iarg + 2, c);
+  } else if (strcmp(arg[iarg + 1], "extended_hertz") == 0) {
+    iarg = parse_extended(lmp, where, true, narg, arg, iarg + 2, c);
   } else if (strcmp(arg[iarg + 1], "walton_braun") == 0) {
     iarg += 2;
     const int n = available(narg, arg, iarg);
@@ -202,7 +354,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   } else if (strcmp(arg[iarg + 1], "lsd") != 0) {
     fail(lmp, where,
          std::string("normal law '") + arg[iarg + 1] +
-             "' is unknown; allowed: lsd, hertz, walton_braun, thornton");
+             "' is unknown; allowed: lsd, hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz");
   } else {
   if (iarg + 2 >= narg)
     fail(lmp, where,
@@ -246,13 +398,15 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
     fail(lmp, where,
          std::string("tangential law '") + arg[iarg + 1] + "' is unknown; allowed: cundall_strack");
   iarg += 2;
-  if (c.mode == MODE_RESTITUTION || c.mode == MODE_HERTZ || c.mode == MODE_WALTON_BRAUN ||
-      c.mode == MODE_THORNTON) {
+  if (c.mode != MODE_STIFFNESS_MASS && c.mode != MODE_STIFFNESS_ABS) {
     need(lmp, where,
          std::string("tangential cundall_strack (with normal ") +
              (c.mode == MODE_HERTZ            ? "hertz"
               : c.mode == MODE_WALTON_BRAUN ? "walton_braun"
               : c.mode == MODE_THORNTON     ? "thornton"
+              : c.mode == MODE_POWER_LAW    ? "power_law"
+              : c.mode == MODE_EXT_LINEAR   ? "extended_linear"
+              : c.mode == MODE_EXT_HERTZ    ? "extended_hertz"
                                             : "lsd restitution") +
              ")",
          "KAPPA MU",
@@ -281,9 +435,12 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       if (iarg + 1 >= narg)
         fail(lmp, where, "keyword 'damping' needs a value; allowed: mass, absolute");
       const std::string v = arg[iarg + 1];
-      if (c.mode == MODE_WALTON_BRAUN || c.mode == MODE_THORNTON)
+      if (c.mode == MODE_WALTON_BRAUN || c.mode == MODE_THORNTON || c.mode == MODE_POWER_LAW)
         fail(lmp, where, "keyword 'damping " + v + "' applies to 'normal lsd stiffness' only "
-                         "(normal walton_braun and thornton have no damping)");
+                         "(normal walton_braun, thornton and power_law have no damping)");
+      if (c.mode == MODE_EXT_LINEAR || c.mode == MODE_EXT_HERTZ)
+        fail(lmp, where, "keyword 'damping " + v + "' applies to 'normal lsd stiffness' only "
+                         "(the extended laws derive their damping from e_fit)");
       if (c.mode == MODE_HERTZ)
         fail(lmp, where,
              "keyword 'damping " + v +
@@ -328,6 +485,35 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
 }
 
 void derive_law(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
+  if (c.mode == MODE_EXT_HERTZ || c.mode == MODE_EXT_LINEAR) {
+    const std::string law = c.mode == MODE_EXT_HERTZ ? "extended_hertz" : "extended_linear";
+    try {
+      if (c.mode == MODE_EXT_HERTZ) {
+        c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
+        tdem::extended::validate(tdem::extended::HertzParams{tdem::hertz::stiffness(c.estar, 1.0),
+                                                              c.ext.e_fit, c.ext.range});
+      } else {
+        tdem::extended::validate(c.ext);
+      }
+      // the first-touch conversion must succeed over the whole clamp range (the kernel's
+      // first-touch path is noexcept and would give a force-free contact otherwise)
+      for (int k = 0; k <= 8; ++k) {
+        const double v = c.ext.range.v_min *
+                         std::pow(c.ext.range.v_max / c.ext.range.v_min, k / 8.0);
+        if (c.mode == MODE_EXT_HERTZ) {
+          const double a = tdem::extended::hertz_alpha(contact_end(c.end), c.ext.e_fit, c.ext.range, v);
+          if (!(a >= 0.0) || !std::isfinite(a)) throw std::domain_error("no finite damping alpha at v0 = " + num(v));
+        } else {
+          const auto lc = tdem::extended::linear_coefficients(contact_end(c.end), c.ext, 1.0, v);
+          if (!(lc.k > 0.0) || !std::isfinite(lc.k) || !(lc.gamma >= 0.0) || !std::isfinite(lc.gamma))
+            throw std::domain_error("no finite stiffness and damping at v0 = " + num(v));
+        }
+      }
+    } catch (const std::exception &ex) {
+      fail(lmp, where, "normal " + law + ": " + ex.what());
+    }
+    return;
+  }
   if (c.mode == MODE_THORNTON) {
     try {
       c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
@@ -364,7 +550,25 @@ void derive_law(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
 
 std::string describe_law(const LawCoeffs &c) {
   std::string s = "normal lsd ";
-  if (c.mode == MODE_THORNTON) {
+  auto fit = [](const tdem::fits::Fit &f, char what) {
+    std::string t = tdem::fits::to_string(f.form);
+    for (int k = 0; k < tdem::fits::coefficient_count(f.form, what); ++k) t += " " + num(f.c[k]);
+    return t;
+  };
+  if (c.mode == MODE_POWER_LAW) {
+    s = "normal power_law al=" + num(c.pl.a_load) + " p=" + num(c.pl.p) + " aul=" +
+        num(c.pl.a_unload) + " q=" + num(c.pl.q) + " tangential cundall_strack kappa=" +
+        num(c.kappa) + " (kt = kappa dF/dxi) mu=" + num(c.mu);
+  } else if (c.mode == MODE_EXT_LINEAR) {
+    s = "normal extended_linear e_fit " + fit(c.ext.e_fit, 'e') + " tc_fit " + fit(c.ext.tc_fit, 't') +
+        " v_min=" + num(c.ext.range.v_min) + " v_max=" + num(c.ext.range.v_max) +
+        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa k(v0)) mu=" + num(c.mu);
+  } else if (c.mode == MODE_EXT_HERTZ) {
+    s = "normal extended_hertz E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
+        " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") e_fit " + fit(c.ext.e_fit, 'e') +
+        " v_min=" + num(c.ext.range.v_min) + " v_max=" + num(c.ext.range.v_max) +
+        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa dF/dxi) mu=" + num(c.mu);
+  } else if (c.mode == MODE_THORNTON) {
     s = "normal thornton E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
         " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") py=" + num(c.th_py) +
         " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa 2 E* a) mu=" + num(c.mu);

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: the normal laws lsd (tdem::lsd), hertz (tdem::hertz), walton_braun and
-// thornton with the Cundall-Strack tangential law (tdem::cundall_strack), as used by pair
-// tdem/gran and fix tdem/wall/gran. The lsd modes run on compile-time specialised paths
-// (M = LawMode 0..2); hertz, walton_braun and thornton on the run-time path (M = -1).
+// tdem for LAMMPS: the normal laws lsd (tdem::lsd), hertz (tdem::hertz), walton_braun,
+// thornton, power_law (tdem::power_law), extended_linear and extended_hertz (tdem::extended)
+// with the Cundall-Strack tangential law (tdem::cundall_strack), as used by pair tdem/gran and
+// fix tdem/wall/gran. The lsd modes run on compile-time specialised paths (M = LawMode 0..2,
+// end and slip fixed too), the other laws on paths specialised for the law (M = 3..8, end and
+// slip read at run time); type pairs with different laws use the run-time path (M = -1).
 //
 // This header is host-specific glue: it holds the per-type-pair coefficients, the argument
 // parser shared by pair_coeff and the wall fix (tdem_lammps_law.cpp), and the per-contact
@@ -16,13 +18,16 @@
 // where LAMMPS applies limit_damping.
 #pragma once
 
+#include "contact/normal/extended.h"
 #include "contact/normal/hertz_damped.h"
 #include "contact/normal/linear_viscoelastic.h"
+#include "contact/normal/power_law_hysteresis.h"
 #include "contact/normal/thornton.h"
 #include "contact/normal/walton_braun.h"
 #include "contact/tangential/cundall_strack.h"
 
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -37,18 +42,43 @@ enum LawMode : int {
   MODE_STIFFNESS_ABS = 1,   // k = KN, gamma = GAMMAN      (GAMMAN in mass/time)
   MODE_RESTITUTION = 2,     // k = m* omega0^2, gamma = m* 2 delta from (e, t_c); kt = KAPPA k
   MODE_HERTZ = 3,           // normal hertz: k~ = 4/3 E* sqrt(R*), damping member hdamp;
-                            // kt = KAPPA * 2 E* a (run-time path only)
+                            // kt = KAPPA * 2 E* a
   MODE_WALTON_BRAUN = 4,    // normal walton_braun KL KUL [S]; kt = KAPPA KL; history xi_max
-  MODE_THORNTON = 5         // normal thornton E NU [E2 NU2] PY; kt = KAPPA 2 E* a;
+  MODE_THORNTON = 5,        // normal thornton E NU [E2 NU2] PY; kt = KAPPA 2 E* a;
                             // history xi_max, f_max
+  MODE_POWER_LAW = 6,       // normal power_law AL P AUL [Q]; kt = KAPPA dF/dxi; history: the
+                            // kernel's slots (tdem::power_law::history_size)
+  MODE_EXT_LINEAR = 7,      // normal extended_linear e_fit .. tc_fit .. [v_min V] [v_max V];
+                            // kt = KAPPA k(v0); history v0, k, gamma
+  MODE_EXT_HERTZ = 8        // normal extended_hertz E NU [E2 NU2] e_fit .. [v_min] [v_max];
+                            // kt = KAPPA dF/dxi (Hertz tangent); history v0, alpha
 };
 
 // History values per contact: 3 (tangential spring) + the normal law's own slots.
 inline constexpr int TANGENTIAL_HISTORY = 3;
-inline int history_size(int mode) {
+constexpr int history_size(int mode) {
   return TANGENTIAL_HISTORY + (mode == MODE_WALTON_BRAUN ? tdem::walton_braun::history_size
                                : mode == MODE_THORNTON   ? tdem::thornton::history_size
+                               : mode == MODE_POWER_LAW  ? tdem::power_law::history_size
+                               : mode == MODE_EXT_LINEAR ? tdem::extended::linear_history_size
+                               : mode == MODE_EXT_HERTZ  ? tdem::extended::hertz_history_size
                                                          : 0);
+}
+
+// The largest history_size of any mode (tangential spring + extended_linear's v0, k, gamma).
+inline constexpr int MAX_HISTORY = TANGENTIAL_HISTORY + tdem::extended::linear_history_size;
+static_assert(history_size(MODE_THORNTON) <= MAX_HISTORY && history_size(MODE_EXT_HERTZ) <= MAX_HISTORY &&
+                  history_size(MODE_POWER_LAW) <= MAX_HISTORY && history_size(MODE_WALTON_BRAUN) <= MAX_HISTORY,
+              "MAX_HISTORY must cover every law");
+
+// Zero the normal-law slots of a contact's history (hsize values in all). Explicit stores:
+// a loop of run-time length here became a memset call per non-touching neighbour (~20 % of
+// the pair time of the history laws).
+inline void clear_law_history(double *shear, int hsize) {
+  static_assert(MAX_HISTORY - TANGENTIAL_HISTORY == 3, "adapt clear_law_history");
+  if (hsize > TANGENTIAL_HISTORY) shear[TANGENTIAL_HISTORY] = 0.0;
+  if (hsize > TANGENTIAL_HISTORY + 1) shear[TANGENTIAL_HISTORY + 1] = 0.0;
+  if (hsize > TANGENTIAL_HISTORY + 2) shear[TANGENTIAL_HISTORY + 2] = 0.0;
 }
 
 // Damping member of normal hertz (values of LawCoeffs::hdamp).
@@ -85,7 +115,16 @@ struct LawCoeffs {
   double wb_kl = 0, wb_ku = 0, wb_s = 0;
   // normal thornton (MODE_THORNTON): limiting contact pressure p_y (materials in E1 .. estar)
   double th_py = 0;
+  // ---- restart format version 3 appends the members below (version 2 files end here)
+  // normal power_law (MODE_POWER_LAW): a_l, p, a_ul, q
+  tdem::power_law::Params<double> pl{0.0, 0.0, 0.0, 0.0};
+  // normal extended_linear / extended_hertz (MODE_EXT_LINEAR, MODE_EXT_HERTZ): the fits e(v0),
+  // t_c(v0) (linear only) and the impact-velocity clamp; extended_hertz keeps its materials in
+  // E1 .. estar (k~ = 4/3 E* sqrt(R*) per contact)
+  tdem::extended::LinearParams ext;
 };
+// Bytes of LawCoeffs in restart files of version 2 (before the members of version 3).
+inline constexpr size_t LAW_COEFFS_V2_SIZE = offsetof(LawCoeffs, pl);
 
 inline tdem::ContactEnd contact_end(int end) {
   return end ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
@@ -201,6 +240,48 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     ccel = res.force * rinv;
     tp.kt = c.kappa * 2.0 * c.estar * sqrt(reff * overlap);  // KAPPA * 2 E* a (Hertz tangent)
     tp.gammat = 0.0;
+  } else if (mode == MODE_POWER_LAW) {
+    // power-law hysteresis; its history slots (xi_max ...) from slot 3 on; ends at zero force
+    tdem::NormalKinematics<double> kin;
+    kin.overlap = overlap;
+    kin.overlap_rate = -vnnr * rinv;
+    kin.meff = meff;
+    kin.reff = 0.0;
+    const auto res = tdem::power_law::force(c.pl, kin, shear + TANGENTIAL_HISTORY, update);
+    ccel = res.force * rinv;
+    tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi of the branch in use
+    tp.gammat = 0.0;
+  } else if (mode == MODE_EXT_LINEAR) {
+    // k(v0), gamma(v0) fixed at first touch; v0, k, gamma in history slots 3..5
+    tdem::NormalKinematics<double> kin;
+    kin.overlap = overlap;
+    kin.overlap_rate = -vnnr * rinv;
+    kin.meff = meff;
+    kin.reff = 0.0;
+    double *h = shear + TANGENTIAL_HISTORY;
+    const auto res =
+        end ? tdem::extended::linear_force<tdem::ContactEnd::zero_force>(c.ext, kin, h, update)
+            : tdem::extended::linear_force<tdem::ContactEnd::zero_overlap>(c.ext, kin, h, update);
+    ccel = res.force * rinv;
+    tp.kt = c.kappa * res.stiffness;  // KAPPA * k(v0)
+    tp.gammat = 0.0;
+  } else if (mode == MODE_EXT_HERTZ) {
+    // Hertz spring with Tsuji damping alpha(v0) fixed at first touch; v0, alpha in slots 3, 4
+    const double reff = radj > 0.0 ? radi * radj / (radi + radj) : radi;
+    const tdem::extended::HertzParams hp{tdem::hertz::stiffness(c.estar, reff), c.ext.e_fit,
+                                         c.ext.range};
+    tdem::NormalKinematics<double> kin;
+    kin.overlap = overlap;
+    kin.overlap_rate = -vnnr * rinv;
+    kin.meff = meff;
+    kin.reff = reff;
+    double *h = shear + TANGENTIAL_HISTORY;
+    const auto res =
+        end ? tdem::extended::hertz_force<tdem::ContactEnd::zero_force>(hp, kin, h, update)
+            : tdem::extended::hertz_force<tdem::ContactEnd::zero_overlap>(hp, kin, h, update);
+    ccel = res.force * rinv;
+    tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi (Hertz tangent 3/2 k~ sqrt(xi))
+    tp.gammat = 0.0;
   } else if (end)
     ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_force>(nc, overlap, vnnr, rinv, rsqinv);
   else
@@ -226,7 +307,8 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
                                                                           update, shear, fs);
 }
 
-// Dispatch helper: calls F.template run<M,E,S>() for the combination (all compile-time) or
+// Dispatch helper: calls F.template run<M,E,S>() for the combination (all compile-time; the
+// laws other than lsd with the law fixed at compile time and end, slip read at run time) or
 // the run-time fallback run<-1,-1,-1>() when `uniform` is false.
 template <class F>
 inline void dispatch(bool uniform, int mode, int end, int slip, F &&f) {
@@ -236,6 +318,11 @@ inline void dispatch(bool uniform, int mode, int end, int slip, F &&f) {
   TDEM_LMP_CASE(0, 0, 0) TDEM_LMP_CASE(0, 0, 1) TDEM_LMP_CASE(0, 1, 0) TDEM_LMP_CASE(0, 1, 1)
   TDEM_LMP_CASE(1, 0, 0) TDEM_LMP_CASE(1, 0, 1) TDEM_LMP_CASE(1, 1, 0) TDEM_LMP_CASE(1, 1, 1)
   TDEM_LMP_CASE(2, 0, 0) TDEM_LMP_CASE(2, 0, 1) TDEM_LMP_CASE(2, 1, 0) TDEM_LMP_CASE(2, 1, 1)
+#undef TDEM_LMP_CASE
+#define TDEM_LMP_CASE(m) \
+  if (mode == m) return f.template run<m, -1, -1>();
+  TDEM_LMP_CASE(MODE_HERTZ) TDEM_LMP_CASE(MODE_WALTON_BRAUN) TDEM_LMP_CASE(MODE_THORNTON)
+  TDEM_LMP_CASE(MODE_POWER_LAW) TDEM_LMP_CASE(MODE_EXT_LINEAR) TDEM_LMP_CASE(MODE_EXT_HERTZ)
 #undef TDEM_LMP_CASE
   f.template run<-1, -1, -1>();
 }

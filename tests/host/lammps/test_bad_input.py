@@ -42,7 +42,8 @@ def pair(coeff, style="pair_style tdem/gran"):
 CASES = [
     # name, body, expected substrings
     ("unknown normal law", pair("normal hooke 2000 50 tangential cundall_strack 600 25 0.5"),
-     ["normal law 'hooke' is unknown", "allowed: lsd, hertz, walton_braun, thornton"]),
+     ["normal law 'hooke' is unknown",
+      "allowed: lsd, hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz"]),
     # normal hertz
     ("hertz value count", pair("normal hertz 2e8 0.3 0.1 tangential cundall_strack 0.8 0.5"),
      ["normal hertz needs 2 values (E NU", "or 4 values", "got 3"]),
@@ -97,6 +98,62 @@ CASES = [
     ("wall hertz bad nu", pair(GOOD) + "\n" + WALL.format(
         law="normal hertz 2e8 0.3 2e8 0.7 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL"),
      ["fix w tdem/wall/gran", "normal hertz NU2 (Poisson ratio) = 0.7 is outside the allowed range (-1, 0.5]"]),
+    # normal power_law
+    ("power_law value count", pair("normal power_law 1e7 1.5 tangential cundall_strack 0.8 0.5"),
+     ["normal power_law needs 3 or 4 values (AL P AUL [Q]), got 2"]),
+    ("power_law negative P", pair("normal power_law 1e7 -1.5 3e7 tangential cundall_strack 0.8 0.5"),
+     ["normal power_law P (loading exponent) = -1.5 must be > 0"]),
+    ("power_law zero AUL", pair("normal power_law 1e7 1.5 0 tangential cundall_strack 0.8 0.5"),
+     ["normal power_law AUL (unloading coefficient a_ul) = 0 must be > 0"]),
+    ("power_law negative Q", pair("normal power_law 1e7 1.5 3e7 -0.5 tangential cundall_strack 0.8 0.5"),
+     ["normal power_law Q (extra unloading exponent) = -0.5 must be >= 0"]),
+    ("power_law damping", pair("normal power_law 1e7 1.5 3e7 tangential cundall_strack 0.8 0.5 damping mass"),
+     ["keyword 'damping mass' applies to 'normal lsd stiffness' only", "power_law have no damping"]),
+    # normal extended_linear
+    ("ext_linear missing e_fit", pair("normal extended_linear tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear needs 'e_fit constant|rational|power C0 ..', got 'tc_fit'"]),
+    ("ext_linear unknown e form", pair("normal extended_linear e_fit linear 0.5 tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear e_fit form 'linear' is unknown; allowed: constant C0, rational C0 C1 C2, power C0 C1"]),
+    ("ext_linear e_fit count", pair("normal extended_linear e_fit rational 1 1 tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear e_fit rational needs 3 values (C0 C1 C2), got 2"]),
+    ("ext_linear e above 1", pair("normal extended_linear e_fit constant 1.5 tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear e_fit constant (C0 = 1.5)", "coefficient of restitution e = 1.5 is outside the allowed range (0, 1]"]),
+    ("ext_linear negative chi1", pair("normal extended_linear e_fit rational -1 1 0.2 tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["e_fit rational (C0 = -1, C1 = 1, C2 = 0.2)", "restitution fit chi1 = -1 is outside the allowed range (0, inf)"]),
+    ("ext_linear power v_c zero", pair("normal extended_linear e_fit power 0 0.1 tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["e_fit power (C0 = 0, C1 = 0.1)", "restitution fit v_c = 0 is outside the allowed range (0, inf)"]),
+    ("ext_linear missing tc_fit", pair("normal extended_linear e_fit constant 0.5 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear needs 'tc_fit constant|power C0 ..' after e_fit, got 'tangential'"]),
+    ("ext_linear rational tc", pair("normal extended_linear e_fit constant 0.5 tc_fit rational 1 1 1 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear tc_fit form 'rational' is unknown; allowed: constant C0, power C0 C1"]),
+    ("ext_linear tc zero", pair("normal extended_linear e_fit constant 0.5 tc_fit constant 0 tangential cundall_strack 0.8 0.5"),
+     ["tc_fit constant (C0 = 0)", "contact time t_c = 0 is outside the allowed range (0, inf)"]),
+    ("ext_linear tc_fit count", pair("normal extended_linear e_fit constant 0.5 tc_fit power 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear tc_fit power needs 2 values (C0 C1), got 1"]),
+    ("ext_linear negative v_min", pair("normal extended_linear e_fit constant 0.5 tc_fit constant 1e-3 v_min -1 tangential cundall_strack 0.8 0.5"),
+     ["v_min = -1", "smallest impact velocity v_min = -1 is outside the allowed range (0, inf)"]),
+    ("ext_linear v_max below v_min", pair("normal extended_linear e_fit constant 0.5 tc_fit constant 1e-3 v_min 1 v_max 0.5 tangential cundall_strack 0.8 0.5"),
+     ["largest impact velocity v_max = 0.5 is outside the allowed range [v_min, inf)"]),
+    ("ext_linear v_max no value", pair("normal extended_linear e_fit constant 0.5 tc_fit constant 1e-3 v_max tangential cundall_strack 0.8 0.5"),
+     ["normal extended_linear v_max needs 1 value (impact velocity), got 0"]),
+    ("ext_linear damping", pair("normal extended_linear e_fit constant 0.5 tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5 damping absolute"),
+     ["keyword 'damping absolute' applies to 'normal lsd stiffness' only", "derive their damping from e_fit"]),
+    # normal extended_hertz
+    ("ext_hertz value count", pair("normal extended_hertz 1e9 0.3 1e9 e_fit constant 0.5 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_hertz needs 2 values (E NU", "or 4 values (E1 NU1 E2 NU2) before e_fit, got 3"]),
+    ("ext_hertz nu", pair("normal extended_hertz 1e9 0.7 e_fit constant 0.5 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_hertz NU (Poisson ratio) = 0.7 is outside the allowed range (-1, 0.5]"]),
+    ("ext_hertz tc_fit", pair("normal extended_hertz 1e9 0.3 e_fit constant 0.5 tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
+     ["normal extended_hertz takes no tc_fit"]),
+    ("ext_hertz mixing mismatch", "pair_style tdem/gran\npair_coeff 1 1 normal extended_hertz 1e9 0.3 e_fit constant 0.5 "
+     "tangential cundall_strack 0.8 0.5\npair_coeff 2 2 normal extended_hertz 2e9 0.3 e_fit constant 0.6 tangential cundall_strack 0.8 0.5",
+     ["no pair_coeff for type pair 1 2", "differ in more than the material"]),
+    ("wall ext_hertz bad e_fit", pair(GOOD) + "\n" + WALL.format(
+        law="normal extended_hertz 1e9 0.3 e_fit power 0.1 -2 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL"),
+     ["fix w tdem/wall/gran", "e_fit power (C0 = 0.1, C1 = -2)", "restitution fit exponent p = -2 is outside the allowed range [0, inf)"]),
+    ("wall power_law count", pair(GOOD) + "\n" + WALL.format(
+        law="normal power_law 1e7 1.5 3e7 0.5 7 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL"),
+     ["fix w tdem/wall/gran", "normal power_law needs 3 or 4 values (AL P AUL [Q]), got 5"]),
     ("unknown tangential law", pair("normal lsd stiffness 2000 50 tangential mindlin 600 25 0.5"),
      ["tangential law 'mindlin' is unknown", "allowed: cundall_strack"]),
     ("unknown parametrisation", pair("normal lsd damped 2000 50 tangential cundall_strack 600 25 0.5"),
@@ -142,7 +199,8 @@ CASES = [
     ("unknown option", pair(GOOD + " rolling sds"),
      ["unexpected argument 'rolling'", "allowed options"]),
     ("missing law", pair(""),
-     ["expected 'normal lsd|hertz|walton_braun|thornton ...' first, got 'end of line'"]),
+     ["expected 'normal lsd|hertz|walton_braun|thornton|power_law|extended_linear|extended_hertz ...' "
+      "first, got 'end of line'"]),
     ("pair_style arguments", pair(GOOD, "pair_style tdem/gran 2000 50"),
      ["pair_style tdem/gran takes no arguments", "'2000'"]),
     ("missing type pair", "pair_style tdem/gran\npair_coeff 1 1 " + GOOD + "\npair_coeff 2 2 " + GOOD,
@@ -176,6 +234,17 @@ for name, body in (("good stiffness", pair(GOOD) + "\n" + WALL.format(law=GOOD, 
                    ("good thornton", "pair_style tdem/gran\npair_coeff 1 1 normal thornton 2e8 0.3 1e6 tangential cundall_strack 0.8 0.5"
                     "\npair_coeff 2 2 normal thornton 1e8 0.2 1e6 tangential cundall_strack 0.8 0.5\n"
                     + WALL.format(law="normal thornton 2e8 0.3 1e9 0.25 1e6 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL")),
+                   ("good power_law", pair("normal power_law 1e7 1.5 3e7 0.2 tangential cundall_strack 0.8 0.5")
+                    + "\n" + WALL.format(law="normal power_law 1e7 1.5 3e7 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL")),
+                   ("good extended_linear", pair("normal extended_linear e_fit rational 1 1 0.2 tc_fit power 1e-4 0.2 v_min 0.01 v_max 10 "
+                                                 "tangential cundall_strack 0.8 0.5 limit_force yes")
+                    + "\n" + WALL.format(law="normal extended_linear e_fit power 0.1 0.1 tc_fit constant 1e-4 tangential cundall_strack 0.8 0.5",
+                                         wall="zplane 0 NULL")),
+                   ("good extended_hertz mixed", "pair_style tdem/gran\npair_coeff 1 1 normal extended_hertz 2e8 0.3 e_fit constant 0.6 "
+                    "tangential cundall_strack 0.8 0.5\npair_coeff 2 2 normal extended_hertz 1e8 0.25 e_fit constant 0.6 "
+                    "tangential cundall_strack 0.8 0.5\n" + WALL.format(
+                        law="normal extended_hertz 2e8 0.3 1e9 0.2 e_fit rational 1 1 0.2 v_max 5 tangential cundall_strack 0.8 0.5",
+                        wall="zplane 0 NULL")),
                    ("good hertz mixed", "pair_style tdem/gran\npair_coeff 1 1 " + GOODH + "\npair_coeff 2 2 "
                     + GOODH.replace("2e8 0.3", "1e8 0.25") + "\n" + WALL.format(law=GOODH.replace("0.3", "0.3 1e9 0.2"), wall="zplane 0 NULL"))):
     rc, out = lc.run(args["tdem"], BASE.format(body=body).replace("0.05 0.05", "0 0"), wd, "in.good", check=False)

@@ -237,7 +237,7 @@ src = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..",
 with open(src) as f:
     example = f.read().replace("run             20000", "run             400")
 wd = lc.workdir("hertz_example")
-for name in ("hertz", "walton_braun", "thornton"):
+for name in ("hertz", "walton_braun", "thornton", "power_law", "extended_linear", "extended_hertz"):
     rc, out = lc.run(args["tdem"], example, wd, "in.tdem_laws", extra=("-var", "law", name), check=False)
     chk.check(rc == 0 and "Loop time" in out, "example in.tdem_laws -var law %s runs (exit %d)" % (name, rc))
 chk.done()

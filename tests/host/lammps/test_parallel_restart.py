@@ -21,6 +21,20 @@
    may be summed in a different order (1-ulp differences that the chaotic flow amplifies over
    thousands of steps); over 300 steps the runs must agree to 1e-10 relative. A control run that loses the wall history (the wall fixes get new IDs)
    must differ by more than 1e-6, which shows the check can fail.
+3. The laws with per-contact history added later (power_law: xi_max, ...; extended_linear: v0, k,
+   gamma; extended_hertz: v0, alpha), each in pair tdem/gran and fix tdem/wall/gran:
+   a. restart in the middle of a collision: a head-on pair and a sphere hitting the floor, both
+      unloading at the restart (checked: contact forces on, normal velocities separating);
+      write_restart / read_restart / run M equals run N + run M within 1e-10 relative; a control
+      that loses the pair and wall history (styles defined anew) changes the rebound by > 1e-3.
+   b. -np 2 (processors 2 1 1) = -np 1 within 1e-10 relative for that scene, in which one atom of
+      the pair and the wall-sliding sphere cross the processor boundary during their contacts
+      (their histories migrate mid-contact), newton off and on.
+   c. -np 2 = -np 1 for a small bed (175 spheres from a data file, so the atom IDs do not depend
+      on the processor grid; random-free velocities) falling on the floor, 3000 steps of dense
+      collisions, pair and wall histories of all three laws, newton off and on: max relative
+      difference <= 1e-8 (forces are summed in a different order on two ranks, so the runs
+      differ by round-off that the collisions amplify: ~1e-11 after 3000 steps, 1e-2 after 8000).
    (Observation: stock gran/hooke/history itself is not restart-exact in LAMMPS 29Sep2021:
    its read_restart_settings leaves limit_damping uninitialised.)
 """
@@ -107,4 +121,175 @@ print("restart: max relative difference %.3g (%d differing values); control with
       % (worst, int((rest != full).sum()), worst_lost))
 chk.check(worst <= 1e-10, "restart: 6000 + write/read_restart + 300 steps equal run 6000 + run 300 (max rel diff %.3g)" % worst)
 chk.check(worst_lost > 1e-6, "restart control: losing the wall history changes the result (%.3g)" % worst_lost)
+
+# ---------------------------------------------------------------- 3. laws with history
+TSL = "tangential cundall_strack 0.8 0.3"
+RS = 0.005
+MS = 0.01
+# law, its wall contact time at 1 m/s (scene design: where to restart), time step
+HLAWS = [("power_law", "normal power_law 1e7 1.5 2.915e7 " + TSL, 6.9e-4, 1e-6),
+         ("extended_linear", "normal extended_linear e_fit rational 1 1 0.2 tc_fit power 1e-3 0.2 v_max 20 "
+          + TSL + " limit_force yes", 1.0e-3, 1.4e-6),
+         ("extended_hertz", "normal extended_hertz 1e9 0.3 e_fit power 0.1 0.1 " + TSL, 4.6e-4, 6e-7)]
+HHEAD = """
+units           si
+atom_style      sphere
+atom_modify     map array
+boundary        f f f
+newton          {newton}
+comm_modify     vel yes
+{processors}
+region          box block -0.05 0.05 -0.05 0.05 0 0.1 units box
+create_box      1 box
+"""
+HTAIL = """
+neighbor        0.001 bin
+neigh_modify    delay 0 every 1 check yes
+fix             nve all nve/sphere
+timestep        {dt!r}
+"""
+HREPORT = "".join('print "RES %d $(x[%d]:%%.17g) $(z[%d]:%%.17g) $(vx[%d]:%%.17g) $(vz[%d]:%%.17g)"\n'
+                  % (k, k, k, k, k) for k in (1, 2, 3))
+HSTATE = ('print "STATE $(fx[1]:%.17g) $(fz[3]:%.17g) $(vx[2]-vx[1]:%.17g) $(vz[3]:%.17g)"\n')
+
+
+def hatoms(dt):
+    # pair along x: relative speed 1, drift -5 m/s (atom 2 crosses x = 0 in contact); atom 3
+    # hits the floor at 1 m/s while sliding at +5 m/s across x = 0; both touch at step 20
+    gap = 20 * dt
+    specs = [(-0.0025 - RS, 0.05, -4.5, 0.0), (-0.0025 + RS + gap, 0.05, -5.5, 0.0),
+             (-0.0025 - gap * 5.0, RS + gap, 5.0, -1.0)]
+    out = ["create_atoms 1 single %r 0 %r units box" % (x, z) for x, z, _, _ in specs]
+    for k, (x, z, vx, vz) in enumerate(specs, 1):
+        out.append("set atom %d diameter %r\nset atom %d mass %r\nset atom %d vx %r vz %r"
+                   % (k, 2 * RS, k, MS, k, vx, vz))
+    return "\n".join(out)
+
+
+def hresults(out, key="RES"):
+    vals = []
+    for line in out.splitlines():
+        if line.startswith(key + " "):
+            vals += [float(x) for x in line.split()[1 if key == "STATE" else 2:]]
+    return vals
+
+
+def hworst(a, b):
+    assert len(a) == len(b) and a, (a, b)
+    return max(abs(x - y) / max(abs(x), abs(y), 1e-300) for x, y in zip(a, b))
+
+
+for name, law, tcw, dt in HLAWS:
+    inter = ("pair_style tdem/gran\npair_coeff * * %s\nfix floor all tdem/wall/gran %s zplane 0 NULL\n"
+             % (law, law))
+    n1 = 20 + int(0.7 * tcw / dt)
+    n2 = int(0.8 * tcw / dt) + 100
+    wd = lc.workdir("hist_" + name)
+    base = HHEAD.format(newton="off", processors="") + hatoms(dt) + "\n" + inter + HTAIL.format(dt=dt)
+    _, ref = lc.run(args["tdem"], base + "run %d\nrun %d\n" % (n1, n2) + HREPORT, wd, "in.ref")
+    _, first = lc.run(args["tdem"], base + "run %d\n" % n1 + HSTATE + "write_restart h.restart\n", wd, "in.first")
+    fx1, fz3, vrel, vz3 = hresults(first, "STATE")
+    chk.check(fx1 < 0 and fz3 > 0 and vrel > 0 and vz3 > 0,
+              "%s: restart point is inside both collisions, unloading (pair force %.3g N, relative "
+              "velocity %.3g m/s; wall force %.3g N, vz %.3g m/s)" % (name, fx1, vrel, fz3, vz3))
+    second = ("atom_modify map array\nread_restart h.restart\nneighbor 0.001 bin\n"
+              "neigh_modify delay 0 every 1 check yes\ncomm_modify vel yes\n"
+              "fix floor all tdem/wall/gran %s zplane 0 NULL\nfix nve all nve/sphere\ntimestep %r\nrun %d\n"
+              % (law, dt, n2) + HREPORT)
+    _, rs = lc.run(args["tdem"], second, wd, "in.second")
+    lost = second.replace("fix floor all", "pair_style none\npair_style tdem/gran\npair_coeff * * %s\nfix floor2 all" % law)
+    _, ls = lc.run(args["tdem"], lost, wd, "in.lost")
+    r_ref, r_rs, r_ls = hresults(ref), hresults(rs), hresults(ls)
+    w = hworst(r_ref, r_rs)
+    print("%s: restart mid-collision max rel diff %.3g; history lost: pair vx %.6f vs %.6f, wall vz %.6f vs %.6f"
+          % (name, w, r_ls[2], r_ref[2], r_ls[11], r_ref[11]))
+    chk.check(w <= 1e-10, "%s: restart mid-collision equals run N + run M (max rel diff %.3g)" % (name, w))
+    chk.check(abs(r_ls[2] - r_ref[2]) > 1e-3 and abs(r_ls[11] - r_ref[11]) > 1e-3,
+              "%s: control: losing the pair and wall history changes the rebound" % name)
+    for newton in ("off", "on"):
+        outs = []
+        for np_ in (1, 2):
+            text = (HHEAD.format(newton=newton, processors="processors 2 1 1" if np_ == 2 else "") +
+                    hatoms(dt) + "\n" + inter + HTAIL.format(dt=dt) + "run %d\n" % (n1 + n2) + HREPORT)
+            _, out = lc.run(args["tdem"], text, wd, "in.np%d" % np_, np_=np_, mpirun=args["mpirun"])
+            outs.append(hresults(out))
+        w = hworst(outs[0], outs[1])
+        crossed = outs[1][4] < 0 < outs[1][8]
+        print("%s, newton %s: -np 2 vs -np 1 max rel diff %.3g (atom 2 x %.4f, atom 3 x %.4f at the end)"
+              % (name, newton, w, outs[1][4], outs[1][8]))
+        chk.check(crossed and w <= 1e-10,
+                  "%s, newton %s: -np 2 equals -np 1 with atoms crossing ranks mid-contact (max rel diff %.3g)"
+                  % (name, newton, w))
+
+# small bed, -np 1 vs -np 2
+BED = """
+units           si
+atom_style      sphere
+atom_modify     map array
+boundary        f f f
+newton          {newton}
+comm_modify     vel yes
+{processors}
+read_data       bed.data
+neighbor        0.001 bin
+neigh_modify    delay 0
+pair_style      tdem/gran
+pair_coeff      * * {law}
+fix             w0 all tdem/wall/gran {law} xplane 0 0.03
+fix             w1 all tdem/wall/gran {law} yplane 0 0.03
+fix             w2 all tdem/wall/gran {law} zplane 0 0.06
+fix             g all gravity 9.81 vector 0 0 -1
+fix             nve all nve/sphere
+timestep        2e-5
+compute         nc all contact/atom
+compute         ncs all reduce sum c_nc
+thermo_style    custom step ke c_ncs
+thermo          500
+run             {n}
+write_dump      all custom {dump} id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+"""
+BED_LAWS = [("power_law", "normal power_law 1e5 1.5 2.915e5 " + TSL),
+            ("extended_linear", "normal extended_linear e_fit rational 1 1 0.2 tc_fit constant 2e-3 "
+             + TSL + " limit_force yes"),
+            ("extended_hertz", "normal extended_hertz 1e6 0.3 e_fit power 0.1 0.1 " + TSL)]
+
+
+def bed_data(path):
+    """5 x 5 x 7 spheres on a 5.2 mm lattice, diameters 4.0-4.8 mm, velocities +-0.1 m/s."""
+    rows = []
+    k = 0
+    for iz in range(7):
+        for iy in range(5):
+            for ix in range(5):
+                k += 1
+                x, y, z = (0.003 + 0.0052 * (i + 0.5) for i in (ix, iy, iz))
+                d = 0.0040 + 0.0008 * ((k * 7919) % 101) / 100
+                v = [0.2 * (((k * p) % q) / (q - 1) - 0.5) for p, q in ((104729, 97), (7907, 89), (6101, 83))]
+                rows.append((k, d, x, y, z, v))
+    with open(path, "w") as f:
+        f.write("tdem small bed\n\n%d atoms\n1 atom types\n0 0.03 xlo xhi\n0 0.03 ylo yhi\n"
+                "0 0.06 zlo zhi\n\nAtoms # sphere\n\n" % len(rows))
+        for k, d, x, y, z, v in rows:
+            f.write("%d 1 %r 2500 %r %r %r\n" % (k, d, x, y, z))
+        f.write("\nVelocities\n\n")
+        for k, d, x, y, z, v in rows:
+            f.write("%d %r %r %r 0 0 0\n" % (k, v[0], v[1], v[2]))
+
+
+wd = lc.workdir("bed")
+bed_data(os.path.join(wd, "bed.data"))
+for name, law in BED_LAWS:
+    for newton in ("off", "on"):
+        res, contacts = [], []
+        for np_ in (1, 2):
+            text = BED.format(newton=newton, processors="processors 2 1 1" if np_ == 2 else "", law=law,
+                              n=3000, dump="dump.np%d" % np_)
+            _, out = lc.run(args["tdem"], text, wd, "in.bed%d" % np_, np_=np_, mpirun=args["mpirun"])
+            res.append(lc.read_dump(os.path.join(wd, "dump.np%d" % np_))[1])
+            contacts.append(max(float(r.split()[2]) for r in lc.thermo_blocks(out)[1:]))
+        _, w = lc.rel_diff(res[1][:, 1:], res[0][:, 1:])
+        print("bed %s, newton %s: -np 2 vs -np 1 max rel diff %.3g (%d atoms, up to %d contacts)"
+              % (name, newton, w, res[0].shape[0], contacts[0]))
+        chk.check(res[0].shape == res[1].shape and contacts[0] >= 50 and w <= 1e-8,
+                  "bed %s, newton %s: -np 2 equals -np 1 within 1e-8 (max rel diff %.3g)" % (name, newton, w))
 chk.done()
