@@ -1,3 +1,395 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// (placeholder: filled by the tangential-law work of issue 4)
+// Kernel tests of the non-linear tangential laws and of Walton-Braun's tangential law:
+//  * Mindlin-Deresiewicz load/unload/reload paths under constant N against the closed forms of
+//    physics_reference.md 3.3 (derived below), for fine and coarse steps; the memory rules
+//    (loop closure, mirrored virgin curve, small inner loops and jitter); the dissipation per
+//    closed cycle against Mindlin & Deresiewicz's closed form; gross sliding and unloading from it;
+//  * Walton-Braun tangential load/unload/reload paths and the dissipation of a closed cycle;
+//  * varying N (Thornton & Yin): the written-out rule for one step, full slip following mu N,
+//    and |F| <= mu N along random paths;
+//  * Tsuji and Di Renzo-Di Maio: no-slip stiffness 8 G* a, ratio 2/3, Tsuji damping;
+//  * bad input.
+//
+// Closed forms (constant N, L = mu N, K0 = 8 G* a, a = sqrt(R* xi)). The virgin curve solves
+// dT/dd = K0 (1 - T/L)^(1/3):  d/dT [(1 - T/L)^(2/3)] = -(2/(3L)) (1 - T/L)^(-1/3), so
+//   (1 - T/L)^(2/3) = 1 - 2 K0 d/(3L) = 1 - d/d_c,  d_c = 3L/(2 K0) = 3 mu N/(16 G* a),
+//   T = L [1 - (1 - d/d_c)^(3/2)],  d = d_c [1 - (1 - T/L)^(2/3)]   (MD's delta_t(T)).
+// Unloading from (d*, T*) solves dT/dd = K0 (1 - (T* - T)/(2L))^(1/3) with d decreasing: the same
+// equation for (T* - T)/2 in (d* - d)/2, so (T* - T)/2 = virgin((d* - d)/2):
+//   T = T* - 2L [1 - (1 - (d* - d)/(2 d_c))^(3/2)],
+// and reloading from (d**, T**): T = T** + 2L [1 - (1 - (d - d**)/(2 d_c))^(3/2)].
+// Reloading after unloading from (d*, T*) reaches T* exactly at d* (both branches are the scaled
+// virgin curve), and unloading from a point of the virgin curve reaches -T* at -d* (the mirrored
+// virgin curve), where the stiffnesses agree.
+// Dissipation of the loop between +-T* (force-controlled), W = area between unloading and reloading:
+//   W = int_{-T*}^{T*} (d_u(T) - d_r(T)) dT = 4 T* d* - 8 int_0^{T*} d(y) dy
+//     = (9 L^2/(10 G* a)) [1 - (1 - tau)^(5/3) - (5 tau/6)(1 + (1 - tau)^(2/3))],  tau = T*/L
+// (Johnson, Contact Mechanics eq. 7.60, with 8 G* a for the no-slip stiffness).
+// Walton-Braun: dT/dd = k0 (1 - x)^(1/3), x = s (T - T*)/D, D = L - s T*, from (d*, T*):
+//   T = T* + s D [1 - (1 - 2 k0 s (d - d*)/(3D))^(3/2)]  (T = s L once the bracket is < 0);
+// a closed loop between +-T1 (both branches have D = L + T1): with g(y) = (3D/(2k0))[1 - (1 - y/D)^(2/3)]
+// the displacement from T1 to -T1 is g(2 T1) and
+//   W = 2 T1 g(2 T1) - 2 int_0^{2 T1} g,  int_0^Y g = (3D/(2k0)) [Y - (3D/5)(1 - (1 - Y/D)^(5/3))].
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <functional>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "contact/tangential/common.h"
+#include "contact/tangential/di_renzo.h"
+#include "contact/tangential/mindlin_deresiewicz.h"
+#include "contact/tangential/mindlin_no_slip.h"
+#include "contact/tangential/parameters.h"
+#include "contact/tangential/walton_braun_tangential.h"
+
+namespace tg = tdem::tangential;
+namespace md = tdem::mindlin_deresiewicz;
+namespace wbt = tdem::walton_braun_tangential;
+namespace mns = tdem::mindlin_no_slip;
+namespace drm = tdem::di_renzo;
+using FL = tg::FrictionLimit;
+using V3 = std::array<double, 3>;
+using Kin = tg::TangentialKinematics<double>;
+
+namespace {
+
+const double kGstar = 3e10, kReff = 2e-3, kXi = 1e-5, kMu = 0.3, kN = 10.0;
+const double kA = std::sqrt(kReff * kXi), kK0 = 8.0 * kGstar * kA, kL = kMu * kN, kDc = 1.5 * kL / kK0;
+
+Kin kin(const V3& vt, double dt, double fn, double xi = kXi) {
+  Kin k{};
+  k.n[2] = 1.0;
+  for (int i = 0; i < 3; ++i) k.vt[i] = vt[i];
+  k.dt = dt;
+  k.overlap = xi;
+  k.meff = 1e-3;
+  k.reff = kReff;
+  k.fn = fn;
+  k.kn = 1e6;
+  k.gamman = 0.4;
+  return k;
+}
+
+using ForceFn = std::function<bool(const Kin&, double*, bool, double*)>;
+
+// Moves the contact along x from delta to target in n equal steps (dt = 1); calls check(delta, T, sliding)
+// after each step with T = -F_x the load.
+void drive(const ForceFn& f, double* h, double& delta, double target, int n,
+           const std::function<void(double, double, bool)>& check, double fn = kN) {
+  const double dd = (target - delta) / n;
+  for (int i = 1; i <= n; ++i) {
+    V3 F{};
+    const bool sliding = f(kin({dd, 0, 0}, 1.0, fn), h, true, F.data());
+    delta = (i == n) ? target : delta + dd;
+    check(delta, -F[0], sliding);
+  }
+}
+
+double md_virgin(double d) {
+  const double s = d >= 0 ? 1.0 : -1.0, x = std::fabs(d) / kDc;
+  return x >= 1.0 ? s * kL : s * kL * (1.0 - std::pow(1.0 - x, 1.5));
+}
+double md_unload(double d_star, double t_star, double d) {
+  return t_star - 2.0 * kL * (1.0 - std::pow(1.0 - (d_star - d) / (2.0 * kDc), 1.5));
+}
+double md_reload(double d_2star, double t_2star, double d) {
+  return t_2star + 2.0 * kL * (1.0 - std::pow(1.0 - (d - d_2star) / (2.0 * kDc), 1.5));
+}
+
+ForceFn md_law(FL limit = FL::absolute) {
+  const md::Params<double> p{kGstar, kMu, limit};
+  return [p](const Kin& k, double* h, bool u, double* f) { return md::force(p, k, h, u, f); };
+}
+
+}  // namespace
+
+TEST(MindlinDeresiewicz, LoadUnloadReloadPathsFollowTheClosedForms) {
+  md::validate({kGstar, kMu, FL::absolute});
+  for (int n : {1000, 7}) {  // exact integration per step: coarse steps must follow too
+    double h[md::history_size] = {0}, delta = 0.0;
+    const double tol = 1e-10 * kL;
+    const double d1 = 0.6 * kDc, d2 = -0.2 * kDc, d3 = 0.9 * kDc, d4 = -1.5 * kDc, d5 = d4 + 1.2 * kDc;
+    const auto f = md_law();
+    // virgin loading
+    drive(f, h, delta, d1, n, [&](double d, double t, bool sl) {
+      EXPECT_NEAR(t, md_virgin(d), tol) << "virgin " << d;
+      EXPECT_FALSE(sl);
+    });
+    const double t1 = md_virgin(d1);
+    // unloading from (d1, T1) to d2 (> -d1: stays on the unloading branch)
+    drive(f, h, delta, d2, n, [&](double d, double t, bool) { EXPECT_NEAR(t, md_unload(d1, t1, d), tol) << d; });
+    const double t2 = md_unload(d1, t1, d2);
+    // reloading from (d2, T2): reaches T1 at d1, then the virgin curve
+    drive(f, h, delta, d3, n, [&](double d, double t, bool) {
+      EXPECT_NEAR(t, d <= d1 ? md_reload(d2, t2, d) : md_virgin(d), tol) << "reload " << d;
+    });
+    const double t3 = md_virgin(d3);
+    // unloading from (d3, T3): reaches -T3 at -d3, then the mirrored virgin curve, then gross sliding at -L
+    drive(f, h, delta, d4, n, [&](double d, double t, bool sl) {
+      EXPECT_NEAR(t, d >= -d3 ? md_unload(d3, t3, d) : md_virgin(d), tol) << "unload " << d;
+      if (d < -kDc * (1 + 1e-9)) {
+        EXPECT_TRUE(sl) << d;
+      }
+    });
+    // out of gross sliding: the full unloading curve from T* = -L
+    drive(f, h, delta, d5, n, [&](double d, double t, bool) {
+      EXPECT_NEAR(t, -md_unload(-d4, kL, -d), tol) << "after sliding " << d;
+    });
+  }
+}
+
+TEST(MindlinDeresiewicz, InnerLoopsAndJitterLeaveTheOuterPathUnchanged) {
+  const auto f = md_law();
+  double h[md::history_size] = {0}, delta = 0.0;
+  const auto none = [](double, double, bool) {};
+  const double d1 = 0.8 * kDc;
+  drive(f, h, delta, d1, 10, none);
+  const double t1 = md_virgin(d1);
+  drive(f, h, delta, 0.3 * kDc, 10, none);
+  // Jitter: 200 alternating steps of +-1e-4 d_c, then an inner loop 0.3 -> 0.5 -> 0.3 d_c.
+  for (int i = 0; i < 200; ++i) drive(f, h, delta, delta + (i % 2 ? -1 : 1) * 1e-4 * kDc, 1, none);
+  drive(f, h, delta, 0.5 * kDc, 5, none);
+  drive(f, h, delta, 0.3 * kDc, 5, none);
+  // ... and the outer unloading branch continues as if nothing had happened.
+  drive(f, h, delta, -0.5 * kDc, 20, [&](double d, double t, bool) {
+    EXPECT_NEAR(t, md_unload(d1, t1, d), 1e-10 * kL) << d;
+  });
+  // Reloading now, with an inner unloading loop of its own, still closes at (d1, T1).
+  const double d2 = -0.5 * kDc, t2 = md_unload(d1, t1, d2);
+  drive(f, h, delta, 0.2 * kDc, 5, none);
+  drive(f, h, delta, -0.1 * kDc, 5, none);
+  drive(f, h, delta, 0.9 * kDc, 40, [&](double d, double t, bool) {
+    if (d > 0.2 * kDc) {
+      EXPECT_NEAR(t, d <= d1 ? md_reload(d2, t2, d) : md_virgin(d), 1e-10 * kL) << d;
+    }
+  });
+}
+
+TEST(MindlinDeresiewicz, DissipationPerCycleMatchesTheClosedForm) {
+  const auto f = md_law();
+  for (double tau : {0.2, 0.5, 0.9}) {
+    double h[md::history_size] = {0}, delta = 0.0;
+    const double t_star = tau * kL, d_star = kDc * (1.0 - std::pow(1.0 - tau, 2.0 / 3.0));
+    drive(f, h, delta, d_star, 3, [](double, double, bool) {});
+    double work = 0.0, d_prev = delta, t_prev = t_star;
+    const auto acc = [&](double d, double t, bool) {
+      work += 0.5 * (t + t_prev) * (d - d_prev);
+      d_prev = d, t_prev = t;
+    };
+    const int n = 20000;
+    drive(f, h, delta, -d_star, n, acc);
+    EXPECT_NEAR(t_prev, -t_star, 1e-10 * kL);  // the loop turns at -T*
+    drive(f, h, delta, d_star, n, acc);
+    EXPECT_NEAR(t_prev, t_star, 1e-10 * kL);  // and closes at T*
+    const double W = 9.0 * kL * kL / (10.0 * kGstar * kA) *
+                     (1.0 - std::pow(1.0 - tau, 5.0 / 3.0) - 5.0 * tau / 6.0 * (1.0 + std::pow(1.0 - tau, 2.0 / 3.0)));
+    EXPECT_NEAR(work, W, 1e-6 * W) << tau;
+  }
+}
+
+TEST(MindlinDeresiewicz, SmallDisplacementStiffnessIsTheNoSlipStiffness) {
+  const auto f = md_law();
+  double h[md::history_size] = {0};
+  V3 F{};
+  const double dd = 1e-9 * kDc;
+  f(kin({0, dd, 0}, 1.0, kN), h, true, F.data());
+  EXPECT_NEAR(-F[1] / dd, 8.0 * kGstar * std::sqrt(kReff * kXi), 1e-6 * kK0);
+  EXPECT_NEAR(F[0], 0.0, 1e-30);
+}
+
+TEST(MindlinDeresiewicz, VaryingNormalLoadThorntonYinStep) {
+  const auto f = md_law();
+  // (a) one step of pure normal-load change at x = T/L: T' = T + dL (1 - (1 - T/L)^(1/3)).
+  for (double dn : {3.0, -2.0}) {
+    double h[md::history_size] = {0}, delta = 0.0;
+    drive(f, h, delta, 0.5 * kDc, 4, [](double, double, bool) {});
+    const double t = md_virgin(0.5 * kDc);
+    V3 F{};
+    f(kin({0, 0, 0}, 1.0, kN + dn), h, true, F.data());
+    EXPECT_NEAR(-F[0], t + kMu * dn * (1.0 - std::cbrt(1.0 - t / kL)), 1e-12 * kL) << dn;
+  }
+  // (b) gross sliding follows mu N when N grows or falls (theta = 0).
+  {
+    double h[md::history_size] = {0}, delta = 0.0;
+    drive(f, h, delta, 2.0 * kDc, 4, [](double, double, bool) {});
+    for (double fn : {12.0, 15.0, 11.0, 4.0}) {
+      V3 F{};
+      const bool sl = f(kin({kDc * 0.01, 0, 0}, 1.0, fn), h, true, F.data());
+      EXPECT_NEAR(-F[0], kMu * fn, 1e-12 * kL) << fn;
+      EXPECT_TRUE(sl) << fn;
+    }
+  }
+  // (c) at constant displacement a falling N caps the load at mu N, and a rising one keeps it.
+  {
+    double h[md::history_size] = {0}, delta = 0.0;
+    drive(f, h, delta, 0.7 * kDc, 4, [](double, double, bool) {});
+    double fn = kN;
+    bool sl = false;
+    V3 F{};
+    for (int i = 0; i < 90; ++i) {
+      fn -= 0.1;
+      sl = f(kin({0, 0, 0}, 1.0, fn), h, true, F.data());
+      EXPECT_LE(-F[0], kMu * fn * (1 + 1e-12));
+    }
+    EXPECT_TRUE(sl);
+    EXPECT_NEAR(-F[0], kMu * fn, 1e-12);
+  }
+}
+
+TEST(MindlinDeresiewicz, ForceNeverExceedsTheLimitAlongRandomPaths) {
+  std::mt19937 rng(42);
+  std::uniform_real_distribution<double> U(-1.0, 1.0);
+  for (FL limit : {FL::absolute, FL::positive_normal}) {
+    const auto f = md_law(limit);
+    double h[md::history_size] = {0};
+    double fn = kN, xi = kXi;
+    for (int i = 0; i < 20000; ++i) {
+      fn += 0.8 * U(rng);
+      if (fn > 30.0) fn = 30.0;
+      if (fn < -5.0) fn = -5.0;
+      xi = std::max(1e-7, xi * (1.0 + 0.05 * U(rng)));
+      const V3 v{0.3 * kDc * U(rng), 0.3 * kDc * U(rng), 0.0};
+      V3 F{};
+      f(kin(v, 1.0, fn, xi), h, true, F.data());
+      const double lim = limit == FL::absolute ? kMu * std::fabs(fn) : kMu * std::max(fn, 0.0);
+      ASSERT_LE(std::hypot(F[0], F[1]), lim * (1.0 + 1e-12) + 1e-300) << i;
+      ASSERT_TRUE(std::isfinite(F[0]) && std::isfinite(F[1])) << i;
+      ASSERT_EQ(F[2], 0.0);
+    }
+  }
+}
+
+// ------------------------------------------------------------------ Walton-Braun tangential
+
+namespace {
+double wb_branch(double k0, double d_star, double t_star, double s, double d) {
+  const double D = kL - s * t_star;
+  const double c = 1.0 - 2.0 * k0 * s * (d - d_star) / (3.0 * D);
+  return c <= 0.0 ? s * kL : t_star + s * D * (1.0 - std::pow(c, 1.5));
+}
+ForceFn wb_law(double k0) {
+  const wbt::Params<double> p{k0, 0.0, kMu, FL::absolute};
+  return [p](const Kin& k, double* h, bool u, double* f) { return wbt::force(p, k, h, u, f); };
+}
+}  // namespace
+
+TEST(MindlinWaltonBraunTangential, LoadUnloadReloadPathsFollowTheClosedForms) {
+  const double k0 = 2e7, dcw = 1.5 * kL / k0;  // virgin branch reaches the limit at d = 3L/(2 k0)
+  wbt::validate({k0, 0.0, kMu, FL::absolute});
+  for (int n : {1000, 9}) {
+    const auto f = wb_law(k0);
+    double h[wbt::history_size] = {0}, delta = 0.0;
+    const double tol = 1e-10 * kL;
+    const double d1 = 0.5 * dcw, d2 = -0.3 * dcw, d3 = 2.0 * dcw, d4 = 0.0;
+    drive(f, h, delta, d1, n, [&](double d, double t, bool) { EXPECT_NEAR(t, wb_branch(k0, 0, 0, 1, d), tol) << d; });
+    const double t1 = wb_branch(k0, 0, 0, 1, d1);
+    drive(f, h, delta, d2, n, [&](double d, double t, bool) { EXPECT_NEAR(t, wb_branch(k0, d1, t1, -1, d), tol) << d; });
+    const double t2 = wb_branch(k0, d1, t1, -1, d2);
+    // reloading: no memory of T1 in Walton-Braun - one branch from T2 to the limit
+    drive(f, h, delta, d3, n, [&](double d, double t, bool sl) {
+      const double expected = wb_branch(k0, d2, t2, 1, d);
+      EXPECT_NEAR(t, expected, tol) << d;
+      if (expected >= kL) {
+        EXPECT_TRUE(sl) << d;
+      }
+      if (expected < kL * (1 - 1e-6)) {
+        EXPECT_FALSE(sl) << d;
+      }
+    });
+    // out of gross sliding: unloading from T* = L
+    drive(f, h, delta, d4, n, [&](double d, double t, bool) { EXPECT_NEAR(t, wb_branch(k0, d3, kL, -1, d), tol) << d; });
+  }
+}
+
+TEST(MindlinWaltonBraunTangential, DissipationOfAClosedCycle) {
+  const double k0 = 2e7;
+  for (double tau : {0.3, 0.8}) {
+    const auto f = wb_law(k0);
+    double h[wbt::history_size] = {0}, delta = 0.0;
+    // Load to T1 = tau L on the first branch: d1 = (3L/(2k0)) [1 - (1 - tau)^(2/3)].
+    const double t1 = tau * kL, d1 = 1.5 * kL / k0 * (1.0 - std::pow(1.0 - tau, 2.0 / 3.0));
+    drive(f, h, delta, d1, 3, [](double, double, bool) {});
+    const double D = kL + t1, c = 1.5 * D / k0, Y = 2.0 * t1;
+    const double g2 = c * (1.0 - std::pow(1.0 - Y / D, 2.0 / 3.0));
+    const double int_g = c * (Y - 0.6 * D * (1.0 - std::pow(1.0 - Y / D, 5.0 / 3.0)));
+    const double W = 2.0 * t1 * g2 - 2.0 * int_g;
+    double work = 0.0, d_prev = delta, t_prev = t1;
+    const auto acc = [&](double d, double t, bool) {
+      work += 0.5 * (t + t_prev) * (d - d_prev);
+      d_prev = d, t_prev = t;
+    };
+    drive(f, h, delta, d1 - g2, 20000, acc);
+    EXPECT_NEAR(t_prev, -t1, 1e-9 * kL);
+    drive(f, h, delta, d1, 20000, acc);
+    EXPECT_NEAR(t_prev, t1, 1e-9 * kL);
+    EXPECT_NEAR(work, W, 1e-6 * W) << tau;
+  }
+}
+
+TEST(MindlinWaltonBraunTangential, StiffnessFromKappaTimesNormalStiffness) {
+  const wbt::Params<double> p{0.0, 2.0 / 7.0, kMu, FL::absolute};
+  double h[wbt::history_size] = {0};
+  V3 F{};
+  Kin k = kin({1e-9, 0, 0}, 1.0, kN);
+  k.kn = 7e6;
+  wbt::force(p, k, h, true, F.data());
+  EXPECT_NEAR(-F[0], wb_branch(2e6, 0.0, 0.0, 1.0, 1e-9), 1e-12 * kL);  // k0 = kappa k_n = 2e6 N/m
+  EXPECT_GT(std::fabs(wb_branch(2e6, 0.0, 0.0, 1.0, 1e-9) - wb_branch(2.1e6, 0.0, 0.0, 1.0, 1e-9)), 1e-5 * kL);
+}
+
+// ------------------------------------------------------------------ Tsuji and Di Renzo-Di Maio
+
+TEST(MindlinNoSlip, TsujiAndDiRenzoStiffnessesAndDamping) {
+  const double gstar = tg::effective_shear_modulus_from_E(2.1e11, 0.3, 2.1e11, 0.3);
+  const mns::Params<double> pt{gstar, 1.0, kMu, FL::absolute, tg::SlipReset::spring_only};
+  const mns::Params<double> pt0{gstar, 0.0, kMu, FL::absolute, tg::SlipReset::spring_only};
+  const drm::Params<double> pd{gstar, kMu, FL::absolute};
+  mns::validate(pt);
+  drm::validate(pd);
+  for (double xi : {1e-7, 1e-6, 4e-6}) {
+    const double kt = 8.0 * gstar * std::sqrt(kReff * xi), s = 1e-9, dt = 1e-6, v = s / dt;
+    double ht[3] = {0}, ht0[3] = {0}, hd[3] = {0};
+    V3 ft{}, ft0{}, fd{};
+    Kin k = kin({v, 0, 0}, dt, 1e3, xi);
+    mns::force(pt, k, ht, true, ft.data());
+    mns::force(pt0, k, ht0, true, ft0.data());
+    drm::force(pd, k, hd, true, fd.data());
+    EXPECT_NEAR(-ft0[0], kt * s, 1e-12 * kt * s) << xi;
+    EXPECT_NEAR(-ft[0], kt * s + k.gamman * v, 1e-12 * (kt * s + k.gamman * v)) << xi;  // eta_t = gamma_n
+    EXPECT_NEAR(fd[0] / ft0[0], 2.0 / 3.0, 1e-14) << xi;
+    // Total formulation: the same elongation at a larger overlap gives the larger stiffness.
+    Kin k2 = kin({0, 0, 0}, dt, 1e3, 4.0 * xi);
+    mns::force(pt0, k2, ht0, true, ft0.data());
+    EXPECT_NEAR(-ft0[0], 2.0 * kt * s, 1e-12 * kt * s) << xi;
+  }
+  // No overlap: no stiffness, no force.
+  double h[3] = {1e-6, 0, 0};
+  V3 F{};
+  drm::force(pd, kin({0, 0, 0}, 1e-6, 10.0, 0.0), h, true, F.data());
+  EXPECT_EQ(F[0], 0.0);
+}
+
+TEST(MindlinNoSlip, BadInput) {
+  auto expect_msg = [](const std::function<void()>& fn, const std::string& what, const std::string& value) {
+    try {
+      fn();
+      ADD_FAILURE() << "no exception for " << what;
+    } catch (const std::domain_error& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(what), std::string::npos) << m;
+      EXPECT_NE(m.find(value), std::string::npos) << m;
+      EXPECT_NE(m.find("range"), std::string::npos) << m;
+    }
+  };
+  expect_msg([] { md::validate({-1e9, 0.3, FL::absolute}); }, "effective shear modulus G*", "-1e+09");
+  expect_msg([] { md::validate({1e9, -0.1, FL::absolute}); }, "friction coefficient mu", "-0.1");
+  expect_msg([] { mns::validate({1e9, -1.0, 0.3, FL::absolute, tg::SlipReset::spring_only}); }, "eta_t/gamma_n", "-1");
+  expect_msg([] { drm::validate({0.0, 0.3, FL::absolute}); }, "effective shear modulus G*", "0");
+  expect_msg([] { wbt::validate({-1.0, 0.0, 0.3, FL::absolute}); }, "initial tangential stiffness k_t0", "-1");
+  expect_msg([] { tg::effective_shear_modulus(1e9, 0.3, -2e9, 0.3); }, "shear modulus G2", "-2e+09");
+}

@@ -94,5 +94,31 @@ TDEM_KERNEL bool cap(T* f, T limit) noexcept {
   return true;
 }
 
+// ---------------------------------------------------------------- additions (issue 4 laws)
+// Small vector helpers used by the laws.
+template <class T>
+TDEM_KERNEL T norm(const T* a) noexcept {
+  return std::sqrt(dot(a, a));
+}
+
+template <class T>
+TDEM_KERNEL void copy3(const T* from, T* to) noexcept {
+  to[0] = from[0], to[1] = from[1], to[2] = from[2];
+}
+
+// The tangential displacement increment of this step, vt dt.
+template <class T>
+TDEM_KERNEL void displacement_increment(const TangentialKinematics<T>& k, T* d) noexcept {
+  d[0] = k.vt[0] * k.dt, d[1] = k.vt[1] * k.dt, d[2] = k.vt[2] * k.dt;
+}
+
+// The step every law with a stored spring elongation s does first: carry s into the current
+// plane (carry_into_plane), then advance it by vt dt.
+template <class T>
+TDEM_KERNEL void carry_and_advance(const TangentialKinematics<T>& k, T* s) noexcept {
+  carry_into_plane(k, s);
+  s[0] += k.vt[0] * k.dt, s[1] += k.vt[1] * k.dt, s[2] += k.vt[2] * k.dt;
+}
+
 }  // namespace tangential
 }  // namespace tdem
