@@ -148,6 +148,117 @@ if j:
     check("continuous_potential e", j["e"], 1.0, 1e-9)
     check("continuous_potential xi_max = d - X_min", j["max_overlap"], 1e-5, 1e-6)
 
+# ---- oblique impacts, physics_reference 8.5 (LSD k, gamma from e = 0.98, t_n = 1e-5 s with the
+# variant-A formulas, no attraction; Cundall-Strack spring kappa = 2/7, mu = 0.092; |v| = 3.9 m/s)
+OBL = ("--law lsd --k 2.583963e7 --gamma 1.057811 --end zero_force --R1 0.0025 --rho 4000 --wall --v0 3.9 "
+       "--tangential cundall_strack --mu 0.092 --kappa 0.2857142857142857")
+table85 = {  # theta: beta, e_t, omega', rebound angle of the contact point
+    5: (0.99989, 0.42860, -194.22, -5.101),
+    20: (0.75121, 0.49965, -667.40, -15.588),
+    30: (0.10427, 0.68449, -615.24, -3.515),
+    60: (-0.63189, 0.89483, -355.22, 48.156),
+}
+
+
+def check_abs(name, got, want, tol):
+    err = abs(got - want)
+    ok = err <= tol
+    print(f"{'ok  ' if ok else 'FAIL'} {name}: got {got:.10g}, expected {want:.10g}, abs. error {err:.2e} (tol {tol:g})")
+    if not ok:
+        failures.append(f"{name}: {got} vs {want} (abs. error {err:.2e} > {tol})")
+
+
+for theta, (beta, et, om, rb) in table85.items():
+    j = collide(f"{OBL} --angle {theta} --steps 20000")
+    if not j:
+        continue
+    for key in ("beta", "e_t", "spin_after", "rebound_angle_com", "rebound_angle_contact", "psi1", "psi2",
+                "rigid_body", "stick_slip_switches", "vn0", "vt0", "vs0", "speed", "angle", "tangential"):
+        if key not in j:
+            failures.append(f"oblique JSON lacks '{key}'")
+    # table digits (half a unit of the last one) plus the reference's own accuracy (~1.5e-5)
+    check_abs(f"8.5 theta={theta} beta", j["beta"], beta, 0.5e-5 + 1.5e-5)
+    check_abs(f"8.5 theta={theta} e_t", j["e_t"], et, 0.5e-5 + 1.5e-5)
+    check_abs(f"8.5 theta={theta} spin after", j["spin_after"], om, 0.005 + 1.5e-5 * abs(om))
+    check_abs(f"8.5 theta={theta} rebound angle (contact point)", j["rebound_angle_contact"], rb,
+              0.0005 + 1.5e-5 * abs(rb))
+    check("8.5 realised e", j["e"], 0.98008, 1e-5)
+    vn0, vt0 = 3.9 * math.cos(math.radians(theta)), 3.9 * math.sin(math.radians(theta))
+    check(f"theta={theta} v_n0", j["vn0"], vn0, 1e-12)
+    check(f"theta={theta} psi1 = kappa v_s0/(mu v_n0)", j["psi1"], 2 / 7 * vt0 / (0.092 * vn0), 1e-9)
+    check(f"theta={theta} rebound angle CoM = atan(e_t tan(theta)/e)", math.tan(math.radians(j["rebound_angle_com"])),
+          j["e_t"] * math.tan(math.radians(theta)) / j["e"], 1e-9)
+    if theta == 60:  # gross sliding: rigid-body closed form of 3.1, typed here
+        e = j["e"]
+        vs1 = vt0 - 3.5 * 0.092 * (1 + e) * vn0
+        check_abs("theta=60 rigid-body beta (closed form)", j["beta"], -vs1 / vt0, 3e-5)
+        check("theta=60 rigid_body.beta field", j["rigid_body"]["beta"], -vs1 / vt0, 1e-9)
+        if j["rigid_body"]["gross_sliding"] is not True:
+            failures.append("theta=60: rigid_body.gross_sliding is not true")
+# beta_0 given; switches reported as a list
+j = collide(f"{OBL} --angle 5 --steps 20000 --beta0 0.5")
+if j:
+    check("beta0 = 0.5 in the stick range: rigid_body.beta", j["rigid_body"]["beta"], 0.5, 1e-12)
+    if j["rigid_body"]["beta0_assumed"] is not False:
+        failures.append("--beta0 given but rigid_body.beta0_assumed is not false")
+    sw = j["stick_slip_switches"]
+    if not sw or sw[-1]["to"] != "slip" or not (0.9 * j["contact_time"] < sw[0]["t"] <= j["contact_time"]):
+        failures.append(f"theta=5: expected one late switch to slip, got {sw}")
+# head-on: --angle 0 (and --spin 0) gives exactly the output without them
+base = "--law lsd --k 1e5 --gamma 4.48097 --m1 0.01 --wall --v0 1"
+p0, p1 = run(base), run(base + " --angle 0 --spin 0")
+if p0.stdout != p1.stdout or "beta" in p0.stdout:
+    failures.append("--angle 0 --spin 0 changed the head-on output")
+else:
+    print("ok   --angle 0 --spin 0: same output as head-on")
+# head-on with a tangential law: e of the normal law (variant A, k = 1e5, gamma = 4.48097), no spin
+j = collide(base + " --R1 0.01 --tangential cundall_strack --mu 0.3 --kt 3e4")
+if j:
+    check("theta=0 with friction: e", j["e"], math.exp(-d * math.pi / w), 1e-6)
+    check_abs("theta=0 with friction: spin after", j["spin_after"], 0.0, 0.0)
+    if j["beta"] is not None:
+        failures.append("theta=0: beta should be null (no incoming slip)")
+# a sphere arriving rolling (v_s0 = v_t0 + R omega = 0) keeps its spin and tangential velocity
+vt0 = 3.9 * math.sin(math.radians(30))
+j = collide(f"{OBL} --angle 30 --spin {-vt0 / 0.0025!r} --steps 20000")
+if j:
+    check_abs("rolling sphere: v_s0", j["vs0"], 0.0, 1e-12)
+    check("rolling sphere: spin after = spin before", j["spin_after"], -vt0 / 0.0025, 1e-9)
+    check("rolling sphere: v_t after", j["vt"], vt0, 1e-9)
+# frictionless oblique impact: e_t = 1, beta = -1 (no spin)
+j = collide(f"--law lsd --k 2.583963e7 --R1 0.0025 --rho 4000 --wall --v0 3.9 --angle 45")
+if j:
+    check("frictionless e_t", j["e_t"], 1.0, 1e-12)
+    check("frictionless beta", j["beta"], -1.0, 1e-12)
+    check("frictionless elastic e", j["e"], 1.0, 1e-6)
+# two equal spheres: spin of both, same sign
+j = collide("--law lsd --k 2.583963e7 --gamma 1.057811 --end zero_force --R1 0.0025 --R2 0.0025 --rho 4000 "
+            "--v0 3.9 --angle 60 --tangential cundall_strack --mu 0.092 --kappa 0.2857142857142857 --steps 20000")
+if j:
+    if j["collision"] != "oblique_sphere_sphere" or "spin2_after" not in j:
+        failures.append("sphere-sphere oblique output lacks collision/spin2_after")
+    else:
+        check("sphere-sphere: spin_after = spin2_after", j["spin2_after"], j["spin_after"], 1e-9)
+# other tangential laws run and report their parameters
+for tl in ("linear_spring --mu 0.092 --kappa 0.2857142857142857", "haff_werner --mu 0.092 --gammat 0.01",
+           "mindlin_no_slip --mu 0.092", "di_renzo --mu 0.092 --gstar 6e10", "mindlin_deresiewicz --mu 0.092",
+           "walton_braun --mu 0.092 --kappa 0.87"):
+    j = collide(f"--law hertz --E 3.8e11 --nu 0.23 --R1 0.0025 --rho 4000 --wall --v0 3.9 --angle 30 "
+                f"--tangential {tl} --steps 20000")
+    if j:
+        if not (j["ended"] and -1.0 <= j["beta"] <= 1.0 and j["tangential"] == tl.split()[0]):
+            failures.append(f"--tangential {tl}: ended {j['ended']}, beta {j['beta']}")
+        else:
+            print(f"ok   --tangential {tl.split()[0]}: beta = {j['beta']:.6f}, psi1 = {j['psi1']}")
+# oblique curve
+curve = os.path.join(args.tmp, "collide_oblique.csv")
+j = collide(f"{OBL} --angle 20 --steps 2000 --curve {curve}")
+if j:
+    with open(curve, newline="") as f:
+        rows = list(csv.reader(f))
+    if rows[0] != ["t", "xi", "xi_dot", "F", "Ft", "vs", "sliding"] or len(rows) != j["steps"] + 2:
+        failures.append(f"oblique CSV header {rows[0]} / {len(rows)} rows for {j['steps']} steps")
+
 # ---- help and bad input
 p = run("--help")
 if "--law" not in p.stdout or "--curve" not in p.stdout:
@@ -172,6 +283,26 @@ bad = [
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --rho 7850", "--rho"),
     ("--law continuous_potential --R1 0.005 --m1 0.01 --wall --x-min 0.006 --v0 1", "--x-min"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0", "--v0"),
+    # oblique impacts
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 90", "--angle = 90 is outside the allowed range [0, 90)"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 120", "--angle = 120 is outside the allowed range [0, 90)"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle -5", "--angle = -5 is outside the allowed range [0, 90)"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle abc", "--angle"),
+    ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --angle 30", "--R1"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --tangential nope", "--tangential"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --tangential cundall_strack --kt 1e4", "--mu"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --tangential cundall_strack --mu -1 --kt 1e4",
+     "--mu = -1 is outside the allowed range [0, inf)"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --tangential cundall_strack --mu 0.3", "--kappa"),
+    ("--law hertz --k 1e9 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --tangential cundall_strack --mu 0.3 "
+     "--kappa 0.3", "--kappa"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --tangential cundall_strack --mu 0.3 "
+     "--kt 1e4 --friction-limit sometimes", "--friction-limit"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --beta0 1.5", "--beta0 = 1.5 is outside the allowed range [-1, 1]"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --spin2 10", "--spin2"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --mu 0.3", "--mu"),
+    ("--law lsd --k 1e5 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --tangential haff_werner --mu 0.3 --kt 1",
+     "--kt"),
 ]
 for cmdline, option in bad:
     p = run(cmdline, expect=2)

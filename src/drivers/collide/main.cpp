@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem-collide: a single head-on collision with one of the tdem normal laws, without a host
-// engine. Prints JSON (e, contact time, largest overlap and force, residual overlap, ...) to
-// stdout and optionally writes the force-overlap curve as CSV. See docs/collide.md.
+// tdem-collide: a single collision with one of the tdem normal laws, without a host engine:
+// head-on (src/collision/head_on.h), or oblique with spin and a tangential law
+// (src/collision/oblique.h, with --angle, --spin or --tangential). Prints JSON (e, contact time,
+// largest overlap and force, residual overlap, ...; beta, e_t, spin and rebound angles for oblique
+// impacts) to stdout and optionally writes the force-overlap curve as CSV. See docs/collide.md.
 // Exit status: 0 success, 1 the contact did not end / the curve could not be written,
 // 2 bad input (the message names the option, the value and the allowed range).
 #include <cmath>
@@ -18,15 +20,27 @@
 
 #include "collision/conversions.h"
 #include "collision/head_on.h"
+#include "collision/oblique.h"
+#include "collision/rigid_body.h"
+#include "contact/tangential/di_renzo.h"
+#include "contact/tangential/haff_werner.h"
+#include "contact/tangential/linear_spring.h"
+#include "contact/tangential/mindlin_deresiewicz.h"
+#include "contact/tangential/mindlin_no_slip.h"
+#include "contact/tangential/parameters.h"
+#include "contact/tangential/walton_braun_tangential.h"
 
 namespace {
 
 using namespace tdem;
 using tdem::collision::Bodies;
 
-const char* kHelp = R"(tdem-collide: one head-on collision with a tdem normal law (no host engine).
+const char* kHelp = R"(tdem-collide: one collision with a tdem normal law (no host engine): head-on, or
+oblique with spin and a tangential law.
 
 Usage: tdem-collide --law LAW [law parameters] [bodies] --v0 V [options]
+       tdem-collide --law LAW [...] --R1 R [bodies] --v0 V --angle DEG [--spin W]
+                    [--tangential TLAW [tangential parameters]] [oblique options]
 
 Bodies (sphere 1 hits sphere 2 or a wall; m* and R* are formed from them):
   --m1 M | --rho RHO      mass of sphere 1 [kg], or its density [kg/m^3] (needs --R1)
@@ -35,7 +49,8 @@ Bodies (sphere 1 hits sphere 2 or a wall; m* and R* are formed from them):
   --wall                  sphere 1 hits a plane wall (m2 = R2 = infinity)
   --m2 M | --rho2 RHO     mass or density of sphere 2 (default density: --rho)
   --R2 R                  radius of sphere 2 [m]
-  --v0 V                  impact velocity (relative normal velocity) [m/s], > 0
+  --v0 V                  impact velocity (relative normal velocity) [m/s], > 0; with --angle
+                          the impact speed |v| (the normal component is V cos(angle))
 
 Laws and their parameters (coefficients, or measurable quantities):
   --law lsd               linear spring-dashpot F = k xi + gamma xi'
@@ -77,16 +92,49 @@ Laws and their parameters (coefficients, or measurable quantities):
                           Tsuji damping alpha(v0) from e(v0): --e-fit, --e-coef, --v-min, --v-max,
                           --e-min, --end as extended_linear
 
+Oblique impacts (any of --angle > 0, --spin != 0, --spin2 != 0, --tangential other than none;
+solid spheres, velocity Verlet as the hosts integrate, end of contact located in the step):
+  --angle DEG             impact angle from the normal, [0, 90) degrees (default 0)
+  --spin W                initial spin of sphere 1 [1/s] about the axis normal to the impact plane,
+                          sign: slip velocity v_s = v_t + R1 W (+ R2 W2), v_s = 0 for rolling
+  --spin2 W               initial spin of sphere 2 (not with --wall)
+  --tangential TLAW       tangential law (default none: frictionless):
+      cundall_strack      spring + Coulomb slider (kernel cundall_strack.h, spring truncated on slip)
+          --mu MU  --kt KT | --kappa K (k_t = K k_n; needs lsd, extended_linear or walton_braun)
+          [--gammat G] [--friction-limit positive_normal|absolute]  (default absolute: mu |F_n|)
+      linear_spring       spring(-dashpot) with Coulomb limit (linear_spring.h)
+          --mu MU  --kt KT and/or --kappa K (k_t = KT + K k_n, k_n the normal tangent stiffness)
+          [--gammat G] [--slip-reset spring_only|spring_and_dashpot] [--friction-limit ...]
+      haff_werner         viscous friction, no memory: --mu MU --gammat G [--friction-limit ...]
+      walton_braun        Walton-Braun stiffness k_t0 (1 - x)^(1/3) from the last reversal
+                          (walton_braun_tangential.h): --mu MU --kt KT and/or --kappa K [--friction-limit]
+      mindlin_no_slip     Tsuji no-slip Mindlin spring 8 G* a with dashpot eta_t = R gamma_n:
+          --mu MU  --gstar G | --E E --nu NU [--E2 E --nu2 NU]  [--eta-ratio R] (default 1)
+          [--slip-reset ...] [--friction-limit ...]
+      di_renzo            2/3 of the no-slip stiffness, no dashpot: --mu MU, G* as mindlin_no_slip
+      mindlin_deresiewicz loading/unloading/reloading branches (mindlin_deresiewicz.h): --mu MU, G* as
+                          mindlin_no_slip [--friction-limit ...]
+  --beta0 B               sticking tangential restitution of the rigid-body (Walton) prediction,
+                          [-1, 1] (default 1, marked as assumed)
+  --psi-kappa K           kappa of psi_1 = kappa v_s0/(mu v_n0), psi_2 = kappa v_s'/(mu v_n0)
+                          (default: k_t/k_n of the linear springs and Walton-Braun (k_t0), 4 G*/E* of
+                          the Mindlin laws; none for haff_werner)
+  --lever-arm radius|contact_point   lever of the tangential force: R, or R - xi/2 as LIGGGHTS
+                          (default radius)
+
 Integration and output:
-  --steps N               RK4 steps per estimated contact time, 1 ... 1e6 (default 4000)
+  --steps N               RK4 steps per estimated contact time, 1 ... 1e6 (default 4000;
+                          oblique impacts: velocity Verlet steps, default 100000)
   --dt DT                 fixed time step [s] (overrides --steps)
   --curve FILE            write the samples t,xi,xi_dot,F (CSV, one per step) to FILE
+                          (oblique: t,xi,xi_dot,F,Ft,vs,sliding)
   --help                  this text
 
 Output: JSON on stdout with law, end, parameters, m_eff, r_eff, v0, e, contact_time,
 max_overlap, max_force, residual_overlap, rebound_velocity, dissipated_energy, steps, dt,
-contact_time_estimate, ended, curve. Exit status 0 ok, 1 the contact did not end (e is null)
-or FILE could not be written, 2 bad input.
+contact_time_estimate, ended, curve; oblique impacts add speed, angle, vn0, vt0, vs0, spin, beta,
+e_t, spin_after, rebound angles, psi1, psi2, stick/slip switches and rigid_body (docs/collide.md).
+Exit status 0 ok, 1 the contact did not end (e is null) or FILE could not be written, 2 bad input.
 )";
 
 struct BadInput : std::runtime_error {
@@ -109,7 +157,8 @@ class Args {
         "--damping", "--A", "--alpha", "--theta", "--kl", "--kul", "--s", "--py", "--vy",
         "--eps", "--x-min", "--n", "--d", "--x-cut", "--steps", "--dt", "--curve", "--help",
         "--e-fit", "--e-coef", "--tc-fit", "--tc-coef", "--v-min", "--v-max", "--e-min", "--al", "--p",
-        "--aul", "--q"};
+        "--aul", "--q", "--angle", "--spin", "--spin2", "--tangential", "--mu", "--kt", "--kappa", "--gammat",
+        "--friction-limit", "--slip-reset", "--gstar", "--eta-ratio", "--beta0", "--psi-kappa", "--lever-arm"};
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
       if (a == "-h") a = "--help";
@@ -227,6 +276,10 @@ class Json {
     }
     out_ += "\"";
   }
+  void raw(const std::string& k, const std::string& json) {
+    key(k);
+    out_ += json;
+  }
   void open(const std::string& k) {
     key(k);
     out_ += "{";
@@ -315,12 +368,35 @@ void fit_params(std::vector<std::pair<std::string, double>>& P, const char* name
   for (int i = 0; i < n; ++i) P.push_back({std::string(name) + "_c" + std::to_string(i), f.c[i]});
 }
 
+// The oblique set-up, read before the laws (so that every option is marked as used).
+struct Oblique {
+  bool active = false;
+  double speed = 0.0, angle_deg = 0.0;
+  collision::ObliqueBodies bodies;
+  collision::ObliqueImpact impact;
+  collision::ObliqueOptions opt;
+  std::string tangential = "none";
+  double mu = 0.0, kt = NAN, kappa = NAN, gammat = 0.0, gstar = NAN, estar = NAN, eta_ratio = 1.0;
+  tangential::FrictionLimit limit = tangential::FrictionLimit::absolute;
+  tangential::SlipReset reset = tangential::SlipReset::spring_only;
+  bool beta0_given = false;
+  double beta0 = 1.0;
+  double psi_kappa = NAN;
+  // results
+  std::vector<std::pair<std::string, double>> tparams;  // the tangential coefficients used
+  std::vector<std::pair<std::string, std::string>> tchoices;
+  collision::ObliqueResult r;
+  rigid_body::Output rb;
+  bool rb_valid = false;
+};
+
 struct Run {
   std::string law, end, damping;  // damping: hertz only
   std::vector<std::pair<std::string, double>> params;  // the coefficients used
   double meff = NAN, reff = NAN;                      // reff: NaN if no radius was given
   std::vector<std::pair<std::string, double>> closed;  // closed-form predictions, where known
   collision::Result result;
+  Oblique obl;
 };
 
 // Adds a closed-form prediction; skipped where the closed form does not apply (it throws).
@@ -333,9 +409,242 @@ void predict(Run& run, const char* key, F f) {
   }
 }
 
+// ------------------------------------------------ oblique impacts
+Oblique read_oblique(Args& a, const Bodies& b, double speed, double angle_deg) {
+  Oblique o;
+  o.speed = speed;
+  o.angle_deg = angle_deg;
+  const double spin = a.has("--spin") ? a.number("--spin", -INFINITY, INFINITY, true, true, "(-inf, inf)") : 0.0;
+  double spin2 = 0.0;
+  if (a.has("--spin2")) {
+    if (std::isinf(b.m2) && std::isinf(b.R2)) throw BadInput("option --spin2 cannot be used with --wall");
+    spin2 = a.number("--spin2", -INFINITY, INFINITY, true, true, "(-inf, inf)");
+  }
+  if (a.has("--tangential"))
+    o.tangential = a.choice("--tangential", {"none", "cundall_strack", "linear_spring", "haff_werner", "walton_braun",
+                                              "mindlin_no_slip", "di_renzo", "mindlin_deresiewicz"});
+  o.active = angle_deg > 0.0 || spin != 0.0 || spin2 != 0.0 || o.tangential != "none";
+  const char* oblique_only[] = {"--mu", "--kt", "--kappa", "--gammat", "--friction-limit", "--slip-reset", "--gstar",
+                                "--eta-ratio", "--beta0", "--psi-kappa", "--lever-arm"};
+  if (!o.active) {
+    for (const char* opt : oblique_only)
+      if (a.has(opt))
+        throw BadInput(std::string("option ") + opt + " needs an oblique impact (--angle > 0, --spin or --tangential)");
+    return o;
+  }
+  // bodies: solid spheres, radii needed
+  if (!(b.R1 > 0.0)) throw BadInput("option --R1 is required for an oblique impact (lever arm of the friction)");
+  if (!std::isinf(b.R2) && !(b.R2 > 0.0)) throw BadInput("option --R2 is required for an oblique impact of two spheres");
+  o.bodies.m1 = b.m1;
+  o.bodies.R1 = b.R1;
+  o.bodies.m2 = b.m2;
+  o.bodies.R2 = b.R2;
+  o.impact.speed = speed;
+  o.impact.angle = angle_deg * M_PI / 180.0;
+  o.impact.omega1 = spin;
+  o.impact.omega2 = spin2;
+  if (a.has("--lever-arm"))
+    o.opt.lever = a.choice("--lever-arm", {"radius", "contact_point"}) == "radius" ? collision::LeverArm::radius
+                                                                                   : collision::LeverArm::contact_point;
+  if (a.has("--beta0")) {
+    o.beta0_given = true;
+    o.beta0 = a.number("--beta0", -1.0, 1.0, false, false, "[-1, 1]");
+  }
+  if (a.has("--psi-kappa")) o.psi_kappa = a.positive("--psi-kappa");
+
+  // tangential law parameters
+  const std::string& t = o.tangential;
+  auto need = [&](const char* opt) { a.require(opt, "for --tangential " + t); };
+  auto refuse = [&](const char* opt) {
+    if (a.has(opt)) throw BadInput(std::string("option ") + opt + " does not apply to --tangential " + t);
+  };
+  if (t == "none") {
+    for (const char* opt : {"--mu", "--kt", "--kappa", "--gammat", "--friction-limit", "--slip-reset", "--gstar",
+                            "--eta-ratio"})
+      refuse(opt);
+    return o;
+  }
+  need("--mu");
+  o.mu = a.non_negative("--mu");
+  if (a.has("--friction-limit"))
+    o.limit = a.choice("--friction-limit", {"positive_normal", "absolute"}) == "absolute"
+                  ? tangential::FrictionLimit::absolute
+                  : tangential::FrictionLimit::positive_normal;
+  if (a.has("--slip-reset")) {
+    if (t != "linear_spring" && t != "mindlin_no_slip") refuse("--slip-reset");
+    o.reset = a.choice("--slip-reset", {"spring_only", "spring_and_dashpot"}) == "spring_only"
+                  ? tangential::SlipReset::spring_only
+                  : tangential::SlipReset::spring_and_dashpot;
+  }
+  if (t == "cundall_strack" || t == "linear_spring" || t == "walton_braun") {
+    for (const char* opt : {"--gstar", "--eta-ratio"}) refuse(opt);
+    if (t == "walton_braun") refuse("--gammat");
+    if (t == "cundall_strack" && a.has("--kt") && a.has("--kappa"))
+      throw BadInput("options --kt and --kappa cannot be used together for --tangential cundall_strack");
+    if (!a.has("--kt") && !a.has("--kappa"))
+      throw BadInput("option --kt or --kappa is required for --tangential " + t);
+    if (a.has("--kt")) o.kt = a.positive("--kt");
+    if (a.has("--kappa")) o.kappa = a.positive("--kappa");
+    if (a.has("--gammat")) o.gammat = a.non_negative("--gammat");
+  } else if (t == "haff_werner") {
+    for (const char* opt : {"--kt", "--kappa", "--gstar", "--eta-ratio"}) refuse(opt);
+    need("--gammat");
+    o.gammat = a.non_negative("--gammat");
+  } else {  // mindlin_no_slip, di_renzo, mindlin_deresiewicz
+    for (const char* opt : {"--kt", "--kappa", "--gammat"}) refuse(opt);
+    if (t != "mindlin_no_slip") refuse("--eta-ratio");
+    // G* from --gstar or from --E --nu [--E2 --nu2] (the materials of the Hertz normal law); E*
+    // (for kappa = 4 G*/E* of psi) from --Estar or the same materials.
+    if (!a.has("--gstar") && !a.has("--E"))
+      throw BadInput("option --gstar (or --E with --nu) is required for --tangential " + t);
+    if (a.has("--E")) {
+      need("--nu");
+      const double E1 = a.positive("--E");
+      const double nu1 = a.number("--nu", -1.0, 0.5, true, true, "(-1, 0.5)");
+      const double E2 = a.has("--E2") ? a.positive("--E2", true) : E1;
+      const double nu2 = a.has("--nu2") ? a.number("--nu2", -1.0, 0.5, true, true, "(-1, 0.5)") : nu1;
+      o.gstar = tangential::effective_shear_modulus_from_E(E1, nu1, E2, nu2);
+      o.estar = tangential::effective_youngs_modulus(E1, nu1, E2, nu2);
+    }
+    if (a.has("--gstar")) o.gstar = a.positive("--gstar");
+    if (a.has("--Estar")) o.estar = a.positive("--Estar");
+    if (a.has("--eta-ratio")) o.eta_ratio = a.non_negative("--eta-ratio");
+  }
+  return o;
+}
+
+// A normal stiffness that stays constant through the contact (for kappa), NaN otherwise.
+double constant_normal_stiffness(const Run& run) {
+  const char* key = run.law == "lsd" || run.law == "extended_linear" ? "k"
+                    : run.law == "walton_braun"                      ? "k_l"
+                                                                     : nullptr;
+  if (!key) return NAN;
+  for (const auto& p : run.params)
+    if (p.first == key) return p.second;
+  return NAN;
+}
+
+template <class Law, class TLaw>
+void oblique_with(Run& run, Law& law, TLaw& tlaw) {
+  Oblique& o = run.obl;
+  o.r = collision::integrate_oblique(law, tlaw, o.bodies, o.impact, o.opt);
+  auto& res = run.result;
+  res.ended = o.r.ended;
+  res.v0 = o.r.vn0;
+  res.restitution = o.r.e;
+  res.rebound_velocity = o.r.vn;
+  res.contact_time = o.r.contact_time;
+  res.residual_overlap = o.r.residual_overlap;
+  res.dissipated_energy = o.r.dissipated_energy;
+  res.max_overlap = o.r.max_overlap;
+  res.max_force = o.r.max_normal_force;
+  res.steps = o.r.steps;
+  res.dt = o.r.dt;
+  res.contact_time_estimate = o.r.contact_time_estimate;
+  if (o.r.ended) {
+    o.rb = collision::rigid_body_prediction(o.bodies, o.impact, std::min(std::max(o.r.e, 0.0), 1.0), o.mu, o.beta0);
+    o.rb_valid = true;
+  }
+}
+
 template <class Law>
-collision::Result go(Law& law, const Bodies& b, double v0, const collision::Options& o) {
-  return collision::integrate(law, b, v0, o);
+void run_oblique(Run& run, Law& law, const collision::Options& ho) {
+  Oblique& o = run.obl;
+  o.opt.dt = ho.dt;
+  o.opt.record = ho.record;
+  const std::string& t = o.tangential;
+  const double kn = constant_normal_stiffness(run);
+  auto& T = o.tparams;
+  double kappa = o.psi_kappa;
+  if (t == "none") {
+    collision::Frictionless tl;
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  } else if (t == "cundall_strack") {
+    collision::CundallStrackTangential tl;
+    double kt = o.kt;
+    if (std::isnan(kt)) {
+      if (std::isnan(kn))
+        throw BadInput("option --kappa needs a normal law with a constant stiffness (lsd, extended_linear, "
+                       "walton_braun) for --tangential cundall_strack; give --kt, or use --tangential linear_spring");
+      kt = o.kappa * kn;
+    }
+    tl.p = {kt, o.gammat, o.mu};
+    tl.limit = o.limit;
+    T = {{"kt", kt}, {"gammat", o.gammat}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}, {"slip_rule", "spring"}};
+    if (std::isnan(kappa)) kappa = std::isnan(o.kappa) ? kt / kn : o.kappa;
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  } else if (t == "linear_spring") {
+    collision::TangentialKernelLaw<linear_spring::Params<double>, linear_spring::history_size,
+                                   &linear_spring::force<double>>
+        tl;
+    tl.p = {std::isnan(o.kt) ? 0.0 : o.kt, std::isnan(o.kappa) ? 0.0 : o.kappa, o.gammat, o.mu, o.limit, o.reset};
+    linear_spring::validate(tl.p);
+    T = {{"kt", tl.p.kt}, {"kappa", tl.p.kappa}, {"gammat", o.gammat}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}, {"slip_reset", tangential::to_string(o.reset)}};
+    if (std::isnan(kappa)) kappa = std::isnan(o.kt) ? o.kappa : tl.p.kappa + tl.p.kt / kn;
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  } else if (t == "haff_werner") {
+    collision::TangentialKernelLaw<haff_werner::Params<double>, haff_werner::history_size, &haff_werner::force<double>>
+        tl;
+    tl.p = {o.gammat, o.mu, o.limit};
+    haff_werner::validate(tl.p);
+    T = {{"gammat", o.gammat}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}};
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  } else if (t == "mindlin_no_slip") {
+    collision::TangentialKernelLaw<mindlin_no_slip::Params<double>, mindlin_no_slip::history_size,
+                                   &mindlin_no_slip::force<double>>
+        tl;
+    tl.p = {o.gstar, o.eta_ratio, o.mu, o.limit, o.reset};
+    mindlin_no_slip::validate(tl.p);
+    T = {{"gstar", o.gstar}, {"eta_ratio", o.eta_ratio}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}, {"slip_reset", tangential::to_string(o.reset)}};
+    if (std::isnan(kappa) && !std::isnan(o.estar)) kappa = tangential::kappa_hertz_mindlin(o.gstar, o.estar);
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  } else if (t == "walton_braun") {
+    collision::TangentialKernelLaw<walton_braun_tangential::Params<double>, walton_braun_tangential::history_size,
+                                   &walton_braun_tangential::force<double>>
+        tl;
+    tl.p = {std::isnan(o.kt) ? 0.0 : o.kt, std::isnan(o.kappa) ? 0.0 : o.kappa, o.mu, o.limit};
+    walton_braun_tangential::validate(tl.p);
+    T = {{"kt0", tl.p.kt}, {"kappa", tl.p.kappa}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}};
+    if (std::isnan(kappa)) kappa = std::isnan(o.kt) ? o.kappa : tl.p.kappa + tl.p.kt / kn;
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  } else if (t == "mindlin_deresiewicz") {
+    collision::TangentialKernelLaw<mindlin_deresiewicz::Params<double>, mindlin_deresiewicz::history_size,
+                                   &mindlin_deresiewicz::force<double>>
+        tl;
+    tl.p = {o.gstar, o.mu, o.limit};
+    mindlin_deresiewicz::validate(tl.p);
+    T = {{"gstar", o.gstar}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}};
+    if (std::isnan(kappa) && !std::isnan(o.estar)) kappa = tangential::kappa_hertz_mindlin(o.gstar, o.estar);
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  } else {  // di_renzo
+    collision::TangentialKernelLaw<di_renzo::Params<double>, di_renzo::history_size, &di_renzo::force<double>> tl;
+    tl.p = {o.gstar, o.mu, o.limit};
+    di_renzo::validate(tl.p);
+    T = {{"gstar", o.gstar}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}};
+    if (std::isnan(kappa) && !std::isnan(o.estar)) kappa = tangential::kappa_hertz_mindlin(o.gstar, o.estar);
+    o.opt.kappa = kappa;
+    oblique_with(run, law, tl);
+  }
+}
+
+template <class Law>
+void go(Run& run, Law& law, const Bodies& b, double v0, const collision::Options& o) {
+  if (run.obl.active) run_oblique(run, law, o);
+  else run.result = collision::integrate(law, b, v0, o);
 }
 
 Run run(Args& a) {
@@ -346,7 +655,10 @@ Run run(Args& a) {
   run.law = a.choice("--law", {"lsd", "hertz", "walton_braun", "thornton", "continuous_potential", "power_law",
                                "extended_linear", "extended_hertz"});
   a.require("--v0", "(impact velocity)");
-  const double v0 = a.positive("--v0");
+  const double speed = a.positive("--v0");
+  const double angle_deg = a.has("--angle") ? a.number("--angle", 0.0, 90.0, false, true, "[0, 90) degrees") : 0.0;
+  // The laws are set up for the normal impact velocity (the normal problem of an oblique impact).
+  const double v0 = angle_deg > 0.0 ? speed * std::cos(angle_deg * M_PI / 180.0) : speed;
 
   // ------------------------------------------------ bodies
   Bodies b;
@@ -392,6 +704,8 @@ Run run(Args& a) {
   }
   opt.record = a.has("--curve");
   if (opt.record) a.str("--curve");
+  run.obl = read_oblique(a, b, speed, angle_deg);
+  if (run.obl.active && a.has("--steps")) run.obl.opt.steps_per_contact = opt.steps_per_contact;
 
   // ------------------------------------------------ laws
   if (run.law == "lsd") {
@@ -417,7 +731,7 @@ Run run(Args& a) {
     predict(run, "contact_time", [&] { return lsd::contact_time(law.c, meff, law.end_mode); });
     predict(run, "max_overlap", [&] { return lsd::max_overlap(law.c, meff, v0); });
     a.check_all_used(run.law);
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   } else if (run.law == "hertz") {
     collision::HertzLaw law;
     law.end_mode = read_end(a, ContactEnd::zero_overlap);
@@ -494,7 +808,7 @@ Run run(Args& a) {
     }
     run.damping = d;
     a.check_all_used("hertz");
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   } else if (run.law == "walton_braun") {
     collision::WaltonBraunLaw law;
     if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
@@ -529,7 +843,7 @@ Run run(Args& a) {
       return walton_braun::residual_overlap_ratio(law.p, meff, v0) * walton_braun::max_overlap(law.p, meff, v0);
     });
     a.check_all_used(run.law);
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   } else if (run.law == "thornton") {
     collision::ThorntonLaw law;
     if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
@@ -551,7 +865,7 @@ Run run(Args& a) {
     predict(run, "e", [&] { return thornton::restitution(law.p, reff, meff, v0); });
     predict(run, "max_overlap", [&] { return thornton::max_overlap(law.p, reff, meff, v0); });
     a.check_all_used(run.law);
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   } else if (run.law == "power_law") {
     collision::PowerLawLaw law;
     if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
@@ -577,7 +891,7 @@ Run run(Args& a) {
     predict(run, "max_overlap", [&] { return power_law::max_overlap(law.p, meff, v0); });
     predict(run, "residual_overlap", [&] { return power_law::residual_overlap(law.p, meff, v0); });
     a.check_all_used(run.law);
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   } else if (run.law == "extended_linear") {
     collision::ExtendedLinearLaw law;
     law.end_mode = read_end(a, ContactEnd::zero_overlap);
@@ -594,7 +908,7 @@ Run run(Args& a) {
     predict(run, "e", [&] { return extended::linear_restitution(law.p, v0); });
     predict(run, "contact_time", [&] { return extended::linear_contact_time(law.p, v0); });
     a.check_all_used(run.law);
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   } else if (run.law == "extended_hertz") {
     collision::ExtendedHertzLaw law;
     law.end_mode = read_end(a, ContactEnd::zero_overlap);
@@ -614,7 +928,7 @@ Run run(Args& a) {
     P.push_back({"alpha", extended::hertz_alpha(law.end_mode, law.p.e_fit, law.p.range, v0)});
     predict(run, "e", [&] { return extended::hertz_restitution(law.p, v0); });
     a.check_all_used(run.law);
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   } else {  // continuous_potential
     collision::ContinuousPotentialLaw law;
     law.end_mode = read_end(a, ContactEnd::zero_overlap);
@@ -653,9 +967,78 @@ Run run(Args& a) {
       });
     }
     a.check_all_used(run.law);
-    run.result = go(law, b, v0, opt);
+    go(run, law, b, v0, opt);
   }
   return run;
+}
+
+void write_oblique(Json& j, const Oblique& o) {
+  const auto& x = o.r;
+  const double deg = 180.0 / M_PI;
+  const bool wall = o.bodies.wall();
+  j.str("collision", wall ? "oblique_sphere_wall" : "oblique_sphere_sphere");
+  j.str("tangential", o.tangential);
+  j.open("tangential_parameters");
+  for (const auto& p : o.tparams) j.num(p.first, p.second);
+  for (const auto& p : o.tchoices) j.str(p.first, p.second);
+  j.close();
+  j.str("lever_arm", collision::to_string(o.opt.lever));
+  j.num("speed", o.speed);
+  j.num("angle", o.angle_deg);
+  j.num("vn0", x.vn0);
+  j.num("vt0", x.vt0);
+  j.num("vs0", x.vs0);
+  j.num("spin", x.omega1_0);
+  if (!wall) j.num("spin2", x.omega2_0);
+  j.num("impact_angle_contact", x.impact_angle_contact * deg);
+  j.num("m_t", x.m_t);
+  // NaN (null) where the impact did not end or the ratio is undefined (no tangential velocity)
+  j.num("beta", x.beta);
+  j.num("e_t", x.e_t);
+  j.num("vn", x.vn);
+  j.num("vt", x.vt);
+  j.num("vs", x.vs);
+  j.num("spin_after", x.omega1);
+  if (!wall) j.num("spin2_after", x.omega2);
+  j.num("rebound_angle_com", x.rebound_angle_com * deg);
+  j.num("rebound_angle_contact", x.rebound_angle_contact * deg);
+  j.num("mu", x.mu);
+  j.num("kappa", x.kappa);
+  j.num("slip_ratio_in", x.slip_ratio_in);
+  j.num("slip_ratio_out", x.slip_ratio_out);
+  j.num("psi1", x.psi1);
+  j.num("psi2", x.psi2);
+  j.num("max_tangential_force", x.max_tangential_force);
+  if (!wall) j.num("normal_turn", x.normal_turn * deg);
+  j.boolean("sliding_at_start", x.sliding_at_start);
+  std::string sw = "[";
+  for (size_t i = 0; i < x.switches.size(); ++i) {
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "%s{\"t\": %.17g, \"to\": \"%s\"}", i ? ", " : "", x.switches[i].t,
+                  x.switches[i].sliding ? "slip" : "stick");
+    sw += buf;
+  }
+  sw += "]";
+  j.raw("stick_slip_switches", sw);
+  j.integer("n_switches", x.n_switches);
+  j.open("rigid_body");
+  j.num("beta0", o.beta0);
+  j.boolean("beta0_assumed", !o.beta0_given);
+  if (o.rb_valid) {
+    j.num("e", o.rb.vn / x.vn0);
+    j.num("mu", x.mu);
+    j.boolean("gross_sliding", o.rb.gross_sliding);
+    j.num("beta", o.rb.beta);
+    j.num("e_t", o.rb.e_t);
+    j.num("vt", o.rb.vt);
+    j.num("vs", o.rb.vs);
+    j.num("spin_after", o.rb.omega1);
+    if (!wall) j.num("spin2_after", o.rb.omega2);
+    j.num("rebound_angle_com", o.rb.rebound_angle_com * deg);
+    j.num("rebound_angle_contact", o.rb.rebound_angle_contact * deg);
+    j.num("slip_ratio_gross_sliding", o.rb.psi_slide);
+  }
+  j.close();
 }
 
 }  // namespace
@@ -690,8 +1073,15 @@ int main(int argc, char** argv) {
                    std::strerror(errno));
       status = 1;
     } else {
-      std::fputs("t,xi,xi_dot,F\n", f);
-      for (const auto& s : res.samples) std::fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", s.t, s.xi, s.xi_dot, s.force);
+      if (r.obl.active) {
+        std::fputs("t,xi,xi_dot,F,Ft,vs,sliding\n", f);
+        for (const auto& s : r.obl.r.samples)
+          std::fprintf(f, "%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%d\n", s.t, s.xi, s.xi_dot, s.fn, s.ft, s.vs,
+                       s.sliding ? 1 : 0);
+      } else {
+        std::fputs("t,xi,xi_dot,F\n", f);
+        for (const auto& s : res.samples) std::fprintf(f, "%.17g,%.17g,%.17g,%.17g\n", s.t, s.xi, s.xi_dot, s.force);
+      }
       if (std::fclose(f) != 0) status = 1;
     }
   }
@@ -725,6 +1115,7 @@ int main(int argc, char** argv) {
   j.close();
   if (!curve.empty()) j.str("curve", curve);
   else j.null("curve");
+  if (r.obl.active) write_oblique(j, r.obl);
   std::fputs(j.done().c_str(), stdout);
   if (res.ended && res.steps < 20)
     std::fprintf(stderr, "tdem-collide: warning: only %ld steps in the contact; use a smaller --dt or more --steps\n",
