@@ -341,6 +341,11 @@ ObliqueResult integrate_oblique(NormalLaw& normal, TangentialLaw& tang, const Ob
     k.fn = ev.nr.force;
     k.kn = ev.nr.stiffness;
     k.gamman = ev.nr.damping;
+    if (!wall) {  // the turning rate of the line of centres, n x dn/dt = n x (v1 - v2) / |x1 - x2|
+      const V3 dx = st.x1 - st.x2;
+      const V3 wt = (1.0 / std::sqrt(detail::dot(dx, dx))) * detail::cross(n, st.v1 - st.v2);
+      k.omega_t[0] = wt.x, k.omega_t[1] = wt.y, k.omega_t[2] = wt.z;
+    }
     double ft[3] = {0.0, 0.0, 0.0};
     ev.sliding = tang.force(k, update_tangential, ft);
     const V3 Ft{ft[0], ft[1], ft[2]};

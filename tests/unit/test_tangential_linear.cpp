@@ -38,8 +38,9 @@ namespace {
 double norm(const V3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 double dist(const V3& a, const V3& b) { return norm({a[0] - b[0], a[1] - b[1], a[2] - b[2]}); }
 
-Kin kin(const V3& n, const V3& vt, double dt, double fn, double spin = 0.0) {
+Kin kin(const V3& n, const V3& vt, double dt, double fn, double spin = 0.0, const V3& omega_t = {0, 0, 0}) {
   Kin k{};
+  for (int i = 0; i < 3; ++i) k.omega_t[i] = omega_t[i];
   for (int i = 0; i < 3; ++i) k.n[i] = n[i], k.vt[i] = vt[i];
   k.spin_n = spin;
   k.dt = dt;
@@ -226,15 +227,35 @@ TEST(TangentialAllLaws, ObjectiveUnderLargeRigidRotations) {
       EXPECT_NEAR(norm(f), norm(f0), 1e-9 * norm(f0)) << l.name << " case " << c;
       EXPECT_LT(dist(f, expected), 1e-9 * norm(f0)) << l.name << " case " << c;
     }
-    // A force with components along and across the in-plane axis: the magnitude is kept to
-    // 1e-9; the direction follows to O(step angle) (carry_into_plane projects and rescales).
-    std::vector<double> h(l.history_size + 1, 0.0);
-    const V3 f0 = load_to(l, h.data(), z, {0.6e-4, 0.8e-4, 0.0}, dt, fn);
-    V3 f{};
-    for (int i = 1; i <= steps; ++i)
-      l.force(kin(rot(y, phi * i / steps, z), {0, 0, 0}, dt, fn), h.data(), true, f.data());
-    EXPECT_NEAR(norm(f), norm(f0), 1e-9 * norm(f0)) << l.name;
-    EXPECT_LT(dist(f, rot(y, phi, f0)), 3e-3 * norm(f0)) << l.name;
+    // A force with components along and across the in-plane axis: without the turning rate of
+    // the normal the magnitude is kept to 1e-9 and the direction follows to O(step angle)
+    // (projection and rescaling only); with omega_t given the rotation is exact.
+    for (bool with_rate : {false, true}) {
+      std::vector<double> h(l.history_size + 1, 0.0);
+      const V3 f0 = load_to(l, h.data(), z, {0.6e-4, 0.8e-4, 0.0}, dt, fn);
+      const V3 rate = with_rate ? V3{0, omega, 0} : V3{0, 0, 0};
+      V3 f{};
+      for (int i = 1; i <= steps; ++i)
+        l.force(kin(rot(y, phi * i / steps, z), {0, 0, 0}, dt, fn, 0.0, rate), h.data(), true, f.data());
+      EXPECT_NEAR(norm(f), norm(f0), 1e-9 * norm(f0)) << l.name;
+      EXPECT_LT(dist(f, rot(y, phi, f0)), (with_rate ? 1e-9 : 3e-3) * norm(f0)) << l.name << " rate " << with_rate;
+    }
+    // A general axis (not in the tangent plane, not along the force): turning rate and twist.
+    {
+      std::vector<double> h(l.history_size + 1, 0.0);
+      const V3 f0 = load_to(l, h.data(), z, {0.6e-4, 0.8e-4, 0.0}, dt, fn);
+      const double a = 1.0 / std::sqrt(3.0);
+      const V3 ax{a, -a, a};
+      V3 f{};
+      for (int i = 1; i <= steps; ++i) {
+        const V3 n = rot(ax, phi * i / steps, z);
+        const double wn = omega * (ax[0] * n[0] + ax[1] * n[1] + ax[2] * n[2]);
+        const V3 wt{omega * ax[0] - wn * n[0], omega * ax[1] - wn * n[1], omega * ax[2] - wn * n[2]};
+        l.force(kin(n, {0, 0, 0}, dt, fn, wn, wt), h.data(), true, f.data());
+      }
+      EXPECT_NEAR(norm(f), norm(f0), 1e-9 * norm(f0)) << l.name;
+      EXPECT_LT(dist(f, rot(ax, phi, f0)), 1e-8 * norm(f0)) << l.name << " general axis";
+    }
   }
 }
 

@@ -9,11 +9,13 @@
 //  * spin_n = (omega_i + omega_j)/2 . n: the rate at which the pair turns about the normal.
 //
 // carry_into_plane(): before a stored tangential vector s is used in a new step it is carried
-// along with the pair: (1) rotated about n by spin_n dt (the twist of the pair about the normal),
-// (2) its component along the new normal removed and (3) rescaled to its old length. Under a rigid
-// rotation of the pair (vt = 0) the stored vector - and the force it gives - rotates with the
-// pair and keeps its magnitude (objectivity). Plain projection without (1) and (3) would lose
-// magnitude with every step and ignore the twist.
+// along with the pair: (1) rotated by (omega_t + spin_n n) dt, the turning of the normal plus the
+// twist of the pair about it, (2) any remaining component along the new normal removed and (3)
+// rescaled to its old length. Under a rigid rotation of the pair (vt = 0) the stored vector - and
+// the force it gives - rotates with the pair and keeps its magnitude (objectivity); a host that
+// does not supply omega_t still gets the magnitude exactly and the direction to first order in
+// the turning angle per step. Plain projection without (1) and (3) would lose magnitude with
+// every step and ignore the twist.
 //
 // coulomb_limit(): mu max(Fn, 0) (FrictionLimit::positive_normal, no friction while a law allows
 // attraction) or mu |Fn| (FrictionLimit::absolute, what LIGGGHTS' and LAMMPS' stock styles do).
@@ -45,6 +47,10 @@ struct TangentialKinematics {
   T fn;       // normal force of this contact (> 0 repulsive), from the normal law
   T kn;       // normal tangent stiffness dFn/dxi from the normal law [N/m]
   T gamman;   // normal damping coefficient the normal law used [kg/s]
+  // Turning rate of the normal, n x dn/dt [1/s] (in the tangent plane): for two spheres
+  // n x (v_i - v_j) / |x_i - x_j|, 0 for a plane wall. Leave 0 if unknown (then only the
+  // projection below carries the state, exact to first order in the turning angle per step).
+  T omega_t[3] = {T(0), T(0), T(0)};
 };
 
 template <class T>
@@ -69,12 +75,20 @@ TDEM_KERNEL void rotate_about(const T* n, T phi, T* s) noexcept {
   s[0] = r0, s[1] = r1, s[2] = r2;
 }
 
-// Carries a stored tangential vector s into the current tangent plane (see the header).
+// Carries a stored tangential vector s into the current tangent plane (see the header): rotates
+// it with the pair by (omega_t + spin_n n) dt - exactly the rigid rotation of the pair when both
+// rates are given - then removes any remaining normal component and restores the length.
 template <class T>
 TDEM_KERNEL void carry_into_plane(const TangentialKinematics<T>& k, T* s) noexcept {
   const T len2 = dot(s, s);
   if (len2 == T(0)) return;
-  if (k.spin_n != T(0)) rotate_about(k.n, k.spin_n * k.dt, s);
+  const T w[3] = {k.omega_t[0] + k.spin_n * k.n[0], k.omega_t[1] + k.spin_n * k.n[1],
+                  k.omega_t[2] + k.spin_n * k.n[2]};
+  const T wmag = std::sqrt(dot(w, w));
+  if (wmag > T(0)) {
+    const T axis[3] = {w[0] / wmag, w[1] / wmag, w[2] / wmag};
+    rotate_about(axis, wmag * k.dt, s);
+  }
   const T sn = dot(s, k.n);
   s[0] -= sn * k.n[0], s[1] -= sn * k.n[1], s[2] -= sn * k.n[2];
   const T len2_new = dot(s, s);
