@@ -9,7 +9,10 @@
 // xi_f is fixed by continuity at (xi_max, F_max). No attraction: the force is 0 below xi_f and
 // the contact ends there (ContactEnd::zero_force). With q > 0 the plastic residual xi_f is
 // negative for small maxima (xi_max^q < a_l/a_ul): such a contact is elastic (unloads on the
-// loading curve, e = 1); above that threshold it dissipates. p = 1, q = 0 is Walton-Braun with
+// loading curve, e = 1); above that threshold it dissipates. The restitution is discontinuous
+// there: just above the threshold (xi_f = 0) e = sqrt((p+1)/(p+q+1)) < 1, because the unloading
+// curve a_ul xi^(p+q) meets the loading curve only at xi_max. Fits near the threshold should use
+// the integrated collision, not the closed forms (tdem-fit does). p = 1, q = 0 is Walton-Braun with
 // constant k_ul = a_ul.
 //
 // Closed forms for a head-on impact at v0 (n = p + q, d = xi_max - xi_f):
