@@ -18,6 +18,8 @@
 #include "collision/oblique.h"
 #include "collision/rigid_body.h"
 #include "contact/tangential/linear_spring.h"
+#include "contact/tangential/mindlin_deresiewicz.h"
+#include "contact/tangential/walton_braun_tangential.h"
 
 using namespace tdem;
 using namespace tdem::collision;
@@ -466,4 +468,45 @@ TEST(Oblique, FrictionLimitChoiceWithAttraction) {
   }
   EXPECT_GT(slip_loss[0][0], slip_loss[0][1] * (1 + 1e-3));
   EXPECT_NEAR(slip_loss[1][0], slip_loss[1][1], 1e-12);
+}
+
+// Laws with memory and a stiffness that follows the contact (Mindlin-Deresiewicz, Walton-Braun
+// with k_t ~ k_n) under a Hertz contact: at vanishing impact angles the tangential state must stay
+// small, |beta| <= 1, and no impact may gain kinetic energy (translation + rotation).
+TEST(Oblique, MemoryLawsGainNoEnergyAtGrazingSmallAngles) {
+  HertzLaw n;
+  n.damping = hertz::Damping::tsuji;
+  n.end_mode = ContactEnd::zero_force;
+  const double R = 2.5e-3, m = 4.0 / 3.0 * M_PI * R * R * R * 4000.0;
+  const double es = hertz::effective_modulus(3.8e11, 0.23, 7e10, 0.25);
+  n.p = {hertz::stiffness(es, R), hertz::tsuji_alpha_from_restitution(0.98, ContactEnd::zero_force), 0.0};
+  ObliqueBodies b;
+  b.m1 = m;
+  b.R1 = R;
+  const double gstar = 1.0 / (2.0 * (2.0 - 0.23) * (1.0 + 0.23) / 3.8e11 + 2.0 * (2.0 - 0.25) * (1.0 + 0.25) / 7e10);
+  TangentialKernelLaw<mindlin_deresiewicz::Params<double>, mindlin_deresiewicz::history_size,
+                      &mindlin_deresiewicz::force<double>>
+      md;
+  md.p = {gstar, 0.092};
+  TangentialKernelLaw<walton_braun_tangential::Params<double>, walton_braun_tangential::history_size,
+                      &walton_braun_tangential::force<double>>
+      wb;
+  wb.p = {0.0, 2.0 / 7.0, 0.092};
+  ObliqueOptions o;
+  o.steps_per_contact = 20000;
+  double beta_small = NAN;
+  for (double theta : {0.01, 0.05, 0.2, 1.0, 5.0}) {
+    ObliqueImpact im;
+    im.speed = 3.9;
+    im.angle = theta * kDeg;
+    const ObliqueResult a = integrate_oblique(n, md, b, im, o);
+    const ObliqueResult c = integrate_oblique(n, wb, b, im, o);
+    for (const ObliqueResult* r : {&a, &c}) {
+      EXPECT_LE(std::fabs(r->beta), 1.0) << theta;
+      EXPECT_GE(r->dissipated_energy, 0.0) << theta;
+    }
+    // Mindlin-Deresiewicz: beta tends to one value as the angle vanishes (no-slip limit).
+    if (theta == 0.01) beta_small = a.beta;
+    if (theta == 0.05) EXPECT_NEAR(a.beta, beta_small, 0.01);
+  }
 }

@@ -27,13 +27,17 @@
 // step that crosses a switching point is split there: constant-N paths follow the closed forms
 // to rounding for any step size.
 //
-// Varying N (Thornton & Yin 1991): before the displacement of a step is applied, the change of
-// the limit dF_lim = mu dN (of F_lim, so the FrictionLimit choice is respected) moves the load
+// Varying N (after Thornton & Yin 1991): before the displacement of a step is applied, the change
+// of the limit dF_lim = mu dN (of F_lim, so the FrictionLimit choice is respected) moves the load
 // by s dF_lim (1 - theta), theta = (1 - x)^(1/3) the current stiffness factor and s the branch
-// direction (+ loading, - unloading, + reloading in Thornton & Yin's 1D convention): the slipped
-// annulus carries mu times the change of pressure, the stuck core nothing. The reversal points
-// follow as in Thornton & Yin (T* + mu dN, T** - mu dN): the start of the current branch moves by
-// -s dF_lim, and the points further down the stack alternately by +s dF_lim, -s dF_lim, ...
+// direction: the slipped annulus carries mu times the change of pressure, the stuck core
+// nothing. The reversal loads r_j are scaled with the limit (r_j F_lim/F_lim_prev), so that every
+// branch keeps its place x relative to the new limit. (Thornton & Yin shift T*, T** by +-mu dN
+// instead; with a load T << mu N that moves the branch origin far from T and drives T with the
+// normal load alone - at grazing impacts it made |beta| > 1, i.e. created tangential energy.)
+// A shrinking contact (K0 = 8 G* a falls with the overlap): the stored force and the reversal
+// loads are scaled by K0/K0_prev, so the tangential spring releases its energy with the stiffness
+// instead of creating some (cf. LAMMPS `mindlin_rescale`, Agnolin & Roux 2007).
 // Why it is consistent:
 //   * dN = 0 gives exactly the constant-N branches above (the closed forms);
 //   * on the virgin branch x stays in [0, 1] for any increase of N and for decreases down to
@@ -67,11 +71,13 @@ inline constexpr HistorySlot history[] = {
     {"force_x", true},      {"force_y", true},      {"force_z", true},      {"axis_x", true},
     {"axis_y", true},       {"axis_z", true},       {"direction", false},   {"reversals", false},
     {"reversal_1", false},  {"reversal_2", false},  {"reversal_3", false},  {"reversal_4", false},
-    {"limit_prev", false}};
-inline constexpr int history_size = 13;
+    {"limit_prev", false},  {"k0_prev", false}};
+inline constexpr int history_size = 14;
 // direction: s = +-1 of the current branch (0: fresh contact); reversals: m = 0..4 (stored as a
 // real); reversal_j: the loads r_j; limit_prev: F_lim of the previous step.
-enum Slot { force_slot = 0, axis_slot = 3, direction_slot = 6, count_slot = 7, reversal_slot = 8, limit_slot = 12 };
+enum Slot {
+  force_slot = 0, axis_slot = 3, direction_slot = 6, count_slot = 7, reversal_slot = 8, limit_slot = 12, k0_slot = 13
+};
 
 template <class T>
 TDEM_KERNEL T no_slip_stiffness(const Params<T>& p, const tangential::TangentialKinematics<T>& k) noexcept {
@@ -99,7 +105,7 @@ TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematic
   }
   T F[3], u[3], d[3], r[max_reversals];
   load_axis_state(k, hist, F, u);
-  T s = hist[direction_slot], lp = hist[limit_slot];
+  T s = hist[direction_slot], lp = hist[limit_slot], k0p = hist[k0_slot];
   int m = int(hist[count_slot] + T(0.5));
   m = m < 0 ? 0 : (m > max_reversals ? max_reversals : m);
   for (int j = 0; j < max_reversals; ++j) r[j] = hist[reversal_slot + j];
@@ -112,7 +118,13 @@ TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematic
     }
     u[0] = d[0] / dn, u[1] = d[1] / dn, u[2] = d[2] / dn;
     F[0] = F[1] = F[2] = T(0);
-    s = T(1), m = 0, lp = flim;
+    s = T(1), m = 0, lp = flim, k0p = k0;
+  }
+  // 0. A shrinking contact (K0 falls): scale the stored force and the reversal loads by K0/K0_prev.
+  if (k0p > T(0) && k0 < k0p) {
+    const T g = k0 / k0p;
+    F[0] *= g, F[1] *= g, F[2] *= g;
+    for (int j = 0; j < m; ++j) r[j] *= g;
   }
   T t = -dot(F, u);
   const T Fp[3] = {F[0] + t * u[0], F[1] + t * u[1], F[2] + t * u[2]};
@@ -124,8 +136,8 @@ TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematic
     branch_geometry(m, r, lp, tref, D);
     const T theta = std::cbrt(T(1) - branch_x(t, tref, D, s));
     t += s * dl * (T(1) - theta);
-    T sj = -s;  // r_m moves by -s dl, r_(m-1) by +s dl, ...
-    for (int j = m - 1; j >= 0; --j, sj = -sj) r[j] += sj * dl;
+    const T scale = flim / lp;  // the memory of the reversal points scales with the limit
+    for (int j = 0; j < m; ++j) r[j] *= scale;
   }
   for (int j = 0; j < m; ++j) r[j] = r[j] > flim ? flim : (r[j] < -flim ? -flim : r[j]);
   if (m > 0 && s * (t - r[m - 1]) < T(0)) r[m - 1] = t;  // load behind the start: re-anchor
@@ -185,6 +197,7 @@ TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematic
     hist[count_slot] = T(m);
     for (int j = 0; j < max_reversals; ++j) hist[reversal_slot + j] = j < m ? r[j] : T(0);
     hist[limit_slot] = flim;
+    hist[k0_slot] = k0;
   }
   return sliding;
 }

@@ -19,6 +19,8 @@
 // Varying N (Walton & Braun's rule as we read it): the current F_lim enters the stiffness; T and
 // T* are not rescaled, T* is clamped to [-F_lim, F_lim], a load beyond the limit is capped
 // (gross sliding) and a load behind T* (possible after F_lim has dropped) re-anchors T* = T.
+// When k_t0 falls (k_t0 = kappa k_n of a shrinking Hertz contact) the stored force and T* are
+// scaled by k_t0/k_t0_prev (no energy creation by an incremental spring whose stiffness drops).
 // Gross sliding (|F| reaches F_lim): the axis is re-set to the force direction, T = F_lim, T* = 0.
 // The perpendicular displacement d_perp changes F_perp with the current k_t. |F| <= F_lim always.
 #pragma once
@@ -40,9 +42,9 @@ struct Params {
 
 inline constexpr HistorySlot history[] = {{"force_x", true}, {"force_y", true}, {"force_z", true},
                                           {"axis_x", true},  {"axis_y", true},  {"axis_z", true},
-                                          {"t_star", false}, {"direction", false}};
-inline constexpr int history_size = 8;
-enum Slot { force_slot = 0, axis_slot = 3, t_star_slot = 6, direction_slot = 7 };
+                                          {"t_star", false}, {"direction", false}, {"k0_prev", false}};
+inline constexpr int history_size = 9;
+enum Slot { force_slot = 0, axis_slot = 3, t_star_slot = 6, direction_slot = 7, k0_slot = 8 };
 
 template <class T>
 TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematics<T>& k, T* hist, bool update,
@@ -69,6 +71,12 @@ TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematic
     u[0] = d[0] / dn, u[1] = d[1] / dn, u[2] = d[2] / dn;
     F[0] = F[1] = F[2] = T(0);
     ts = T(0), s = T(1);
+  } else if (hist[k0_slot] > T(0) && k0 < hist[k0_slot]) {
+    // A shrinking contact (k_t0 ~ k_n falls): the stored load follows the stiffness down, so the
+    // spring releases its energy instead of creating some (as in mindlin_deresiewicz.h).
+    const T g = k0 / hist[k0_slot];
+    F[0] *= g, F[1] *= g, F[2] *= g;
+    ts *= g;
   }
   T t = -dot(F, u);
   const T Fp[3] = {F[0] + t * u[0], F[1] + t * u[1], F[2] + t * u[2]};
@@ -100,6 +108,7 @@ TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematic
     copy3(u, hist + axis_slot);
     hist[t_star_slot] = ts;
     hist[direction_slot] = s;
+    hist[k0_slot] = k0;
   }
   return sliding;
 }
