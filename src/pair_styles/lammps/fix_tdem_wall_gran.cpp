@@ -50,7 +50,8 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
   dt = update->dt;
 
   int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
-  size_history = tdem_lammps::history_size(law.mode);  // 3 + the normal law's slots
+  // the tangential block + the normal law's slots
+  size_history = tdem_lammps::history_size(law.mode, law.tlaw);
 
   // wall geometry
   if (iarg >= narg)
@@ -187,7 +188,7 @@ void FixTDEMWallGran::setup(int vflag)
 namespace {
 struct WallRunner {
   FixTDEMWallGran *f;
-  template <int M, int E, int S> void run() { f->template eval<M, E, S>(); }
+  template <int M, int E, int S, int TL = 0> void run() { f->template eval<M, E, S, TL>(); }
 };
 }  // namespace
 
@@ -205,10 +206,10 @@ void FixTDEMWallGran::post_force(int /*vflag*/)
     for (int i = 0; i < atom->nlocal; i++)
       mass_rigid[i] = (body[i] >= 0) ? mass_body[body[i]] : 0.0;
   }
-  tdem_lammps::dispatch(true, law.mode, law.end, law.slip, WallRunner{this});
+  tdem_lammps::dispatch(true, law.mode, law.end, law.slip, law.tlaw, WallRunner{this});
 }
 
-template <int M, int E, int S> __attribute__((flatten, noinline)) void FixTDEMWallGran::eval()
+template <int M, int E, int S, int TL> __attribute__((flatten, noinline)) void FixTDEMWallGran::eval()
 {
   const bool history_update = !update->setupflag;
 
@@ -269,6 +270,10 @@ template <int M, int E, int S> __attribute__((flatten, noinline)) void FixTDEMWa
     const double rad = radius[i];
     double *shear = history_one[i];
     if (rsq > rad * rad) {
+      if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
+        tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, size_history);
+        continue;
+      }
       shear[0] = shear[1] = shear[2] = 0.0;
       tdem_lammps::clear_law_history(shear, size_history);
       continue;
@@ -288,9 +293,9 @@ template <int M, int E, int S> __attribute__((flatten, noinline)) void FixTDEMWa
     const double wr3 = rad * omg[i][2] * rinv;
 
     double ccel, fs[3];
-    tdem_lammps::evaluate_contact<M, E, S>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
-                                           vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
-                                           ccel, fs, rad, 0.0);
+    tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
+                                               vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
+                                               ccel, fs, rad, 0.0, omg[i], nullptr);
 
     f[i][0] += dx * ccel + fs[0];
     f[i][1] += dy * ccel + fs[1];

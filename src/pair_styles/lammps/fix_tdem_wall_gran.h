@@ -48,7 +48,7 @@ class FixTDEMWallGran : public Fix {
   int maxsize_restart() override;
   void reset_dt() override;
 
-  template <int M, int E, int S> void eval();
+  template <int M, int E, int S, int TL> void eval();
 
  protected:
   enum { XPLANE = 0, YPLANE = 1, ZPLANE = 2, ZCYLINDER = 3 };

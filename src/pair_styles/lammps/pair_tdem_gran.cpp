@@ -2,8 +2,10 @@
 // tdem for LAMMPS: pair style tdem/gran (see pair_tdem_gran.h and docs/lammps.md).
 //
 // Bookkeeping follows the LAMMPS conventions for granular pair styles with history: a
-// FixNeighHistory stores 3 values (the tangential spring elongation) per neighbour with a
-// touch flag (+1 with walton_braun: xi_max; +2 with thornton: xi_max, f_max; power_law: the
+// FixNeighHistory stores the tangential block (3 values: the spring elongation of
+// cundall_strack, linear_spring, mindlin_no_slip, di_renzo, unused for haff_werner; 8 for
+// walton_braun, 13 for mindlin_deresiewicz) per neighbour with a touch flag, then the normal
+// law's slots (+1 with walton_braun: xi_max; +2 with thornton: xi_max, f_max; power_law: the
 // slots of tdem::power_law;
 // +3 with extended_linear: v0, k, gamma; +2 with extended_hertz: v0, alpha), the
 // pair asks for a size neighbour list with history, meff uses fix freeze and
@@ -51,6 +53,7 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   onerad_dynamic = onerad_frozen = maxrad_dynamic = maxrad_frozen = nullptr;
   uniform = true;
   umode = uend = uslip = 0;
+  utlaw = 0;
   atom_ntypes = 0;
   dt = 0.0;
   freeze_group_bit = 0;
@@ -93,7 +96,7 @@ namespace {
 struct PairRunner {
   PairTDEMGran *p;
   int eflag, vflag;
-  template <int M, int E, int S> void run() { p->template eval<M, E, S>(eflag, vflag); }
+  template <int M, int E, int S, int TL = 0> void run() { p->template eval<M, E, S, TL>(eflag, vflag); }
 };
 }  // namespace
 
@@ -119,8 +122,8 @@ void PairTDEMGran::compute(int eflag, int vflag)
 
   // compile-time paths when every type pair has the same law (and so the history size of
   // that law)
-  tdem_lammps::dispatch(uniform && size_history == tdem_lammps::history_size(umode), umode, uend,
-                        uslip, PairRunner{this, eflag, vflag});
+  tdem_lammps::dispatch(uniform && size_history == tdem_lammps::history_size(umode, utlaw), umode,
+                        uend, uslip, utlaw, PairRunner{this, eflag, vflag});
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -128,7 +131,7 @@ void PairTDEMGran::compute(int eflag, int vflag)
 // flatten: inline the kernels into each instantiation (the inliner's size limits would keep
 // cundall_strack::force out of line, which costs ~10 % of the pair time); noinline keeps the
 // 19 instantiations out of the dispatcher.
-template <int M, int E, int S>
+template <int M, int E, int S, int TL>
 __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*vflag*/)
 {
   const bool shearupdate = !update->setupflag;
@@ -147,7 +150,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   const int ntp1 = atom_ntypes + 1;
   const LawCoeffs *lawtab = law.data();
   // history values per neighbour: fixed on the compile-time paths, else size_history
-  const int hsize = M >= 0 ? tdem_lammps::history_size(M) : size_history;
+  const int hsize = M >= 0 ? tdem_lammps::history_size(M, TL > 0 ? TL : 0) : size_history;
 
   const int inum = list->inum;
   int *ilist = list->ilist;
@@ -183,6 +186,10 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       if (rsq >= radsum * radsum) {
         // not touching: forget the history
         touch[jj] = 0;
+        if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
+          tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, hsize);
+          continue;
+        }
         shear[0] = 0.0;
         shear[1] = 0.0;
         shear[2] = 0.0;
@@ -215,9 +222,10 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
 
       touch[jj] = 1;
       double ccel, fs[3];
-      tdem_lammps::evaluate_contact<M, E, S>(lawrow[type[j]], meff, delx, dely, delz, r, rinv,
-                                             rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3,
-                                             dt, shearupdate, shear, ccel, fs, radi, radj);
+      tdem_lammps::evaluate_contact<M, E, S, TL>(lawrow[type[j]], meff, delx, dely, delz, r, rinv,
+                                                 rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3,
+                                                 dt, shearupdate, shear, ccel, fs, radi, radj,
+                                                 omega[i], omega[j]);
 
       // forces and torques
       const double fx = delx * ccel + fs[0];
@@ -328,11 +336,27 @@ void PairTDEMGran::init_style()
 
   dt = update->dt;
 
-  // history values per neighbour: 3 (tangential spring) + the largest normal-law need
-  int need_history = tdem_lammps::TANGENTIAL_HISTORY;
+  // one tangential law for all type pairs (the history layout and its transfer depend on it)
+  utlaw = -1;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++) {
+      if (!setflag[i][j]) continue;
+      const int t = coeffs(i, j).tlaw;
+      if (utlaw < 0) utlaw = t;
+      else if (t != utlaw)
+        error->all(FLERR, std::string("pair tdem/gran: tangential law '") + tdem_lammps::tangential_name(t) +
+                              "' of type pair " + std::to_string(i) + " " + std::to_string(j) +
+                              " differs from '" + tdem_lammps::tangential_name(utlaw) +
+                              "' of another type pair; all type pairs must use the same tangential law");
+    }
+  if (utlaw < 0) utlaw = tdem_lammps::TLAW_CUNDALL_STRACK;
+
+  // history values per neighbour: the tangential block + the largest normal-law need
+  int need_history = tdem_lammps::tangential_history_size(utlaw);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
-      if (setflag[i][j]) need_history = MAX(need_history, tdem_lammps::history_size(coeffs(i, j).mode));
+      if (setflag[i][j])
+        need_history = MAX(need_history, tdem_lammps::history_size(coeffs(i, j).mode, utlaw));
   if (fix_history == nullptr)
     size_history = need_history;
   else if (need_history != size_history)
@@ -341,10 +365,12 @@ void PairTDEMGran::init_style()
                    " history values per contact, but the history was created with " +
                    std::to_string(size_history) +
                    "; changing to a law with a different history size (walton_braun, thornton, "
-                   "power_law, extended_linear, extended_hertz) after a run is not supported "
+                   "power_law, extended_linear, extended_hertz, or another tangential law) after a "
+                   "run is not supported "
                    "(use clear, or define that law from the start)");
   // the tangential spring flips sign with the pair order, xi_max does not
-  nondefault_history_transfer = size_history > tdem_lammps::TANGENTIAL_HISTORY ? 1 : 0;
+  nondefault_history_transfer =
+      (size_history > tdem_lammps::TANGENTIAL_HISTORY || utlaw != tdem_lammps::TLAW_CUNDALL_STRACK) ? 1 : 0;
 
   // on first init replace the placeholder with the FixNeighHistory that stores the history
   if (fix_history == nullptr) {
@@ -430,15 +456,20 @@ double PairTDEMGran::init_one(int i, int j)
          (a.ext.e_fit.form != b.ext.e_fit.form || a.ext.e_fit.c[0] != b.ext.e_fit.c[0] ||
           a.ext.e_fit.c[1] != b.ext.e_fit.c[1] || a.ext.e_fit.c[2] != b.ext.e_fit.c[2] ||
           a.ext.range.v_min != b.ext.range.v_min || a.ext.range.v_max != b.ext.range.v_max)) ||
-        a.kappa != b.kappa || a.mu != b.mu || a.end != b.end || a.slip != b.slip)
+        a.kappa != b.kappa || a.mu != b.mu || a.end != b.end || a.slip != b.slip ||
+        a.tlaw != b.tlaw || a.tlimit != b.tlimit || a.t_kt != b.t_kt || a.t_kappa != b.t_kappa ||
+        a.t_gammat != b.t_gammat || a.t_mu != b.t_mu || a.t_ratio != b.t_ratio)
       error->all(FLERR,
                  "pair tdem/gran: no pair_coeff for type pair " + std::to_string(i) + " " +
                      std::to_string(j) +
-                     " and the normal hertz/thornton/extended_hertz laws of types I I and J J "
-                     "differ in more than the material (E, NU); set this type pair");
+                     " and the normal hertz/thornton/extended_hertz laws (with their tangential "
+                     "laws) of types I I and J J differ in more than the materials (E, NU); set "
+                     "this type pair");
     LawCoeffs c = a;
     c.E2 = b.E1;
     c.nu2 = b.nu1;
+    c.tE2 = b.tE1;  // Mindlin-type tangential laws: G* of the two materials
+    c.tnu2 = b.tnu1;
     tdem_lammps::derive_law(lmp, "pair tdem/gran (mixing types " + std::to_string(i) + " " +
                                      std::to_string(j) + ")", c);
     coeffs(i, j) = c;
@@ -498,7 +529,7 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
   if (mask[j] & freeze_group_bit) meff = mi;
 
   // the stored history of this pair (searched from the previous hit); a copy, not updated
-  double shear[8] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  double shear[tdem_lammps::MAX_HISTORY] = {};
   const int jnum = list->numneigh[i];
   int *jlist = list->firstneigh[i];
   for (int jj = 0; jj < jnum; jj++) {
@@ -506,15 +537,21 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
     if (neighprev >= jnum) neighprev = 0;
     if ((jlist[neighprev] & NEIGHMASK) == j) {
       const double *h = &fix_history->firstvalue[i][size_history * neighprev];
-      for (int m = 0; m < size_history && m < 8; m++) shear[m] = h[m];
+      for (int m = 0; m < size_history && m < tdem_lammps::MAX_HISTORY; m++) shear[m] = h[m];
       break;
     }
   }
 
   double ccel, fs[3];
-  tdem_lammps::evaluate_contact<-1, -1, -1>(coeffs(itype, jtype), meff, delx, dely, delz, r, rinv,
-                                            rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3, dt,
-                                            false, shear, ccel, fs, radi, radj);
+  if (coeffs(itype, jtype).tlaw == tdem_lammps::TLAW_CUNDALL_STRACK)
+    tdem_lammps::evaluate_contact<-1, -1, -1>(coeffs(itype, jtype), meff, delx, dely, delz, r, rinv,
+                                              rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2, wr3, dt,
+                                              false, shear, ccel, fs, radi, radj);
+  else
+    tdem_lammps::evaluate_contact<-1, -1, -1, -1>(coeffs(itype, jtype), meff, delx, dely, delz, r,
+                                                  rinv, rsqinv, radsum - r, vr1, vr2, vr3, wr1, wr2,
+                                                  wr3, dt, false, shear, ccel, fs, radi, radj,
+                                                  omega[i], omega[j]);
   fforce = ccel;
   const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
   svector[0] = fs[0];
@@ -533,11 +570,12 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 /* ---------------------------------------------------------------------- */
 
 // Restart data: a version number, then per type pair I <= J the setflag and, if set, the
-// LawCoeffs bytes. Version 3 (power_law, extended_linear, extended_hertz) appended members to
-// LawCoeffs; version 2 files hold the first LAW_COEFFS_V2_SIZE bytes and are still read.
+// LawCoeffs bytes. Version 3 (power_law, extended_linear, extended_hertz) and version 4 (the
+// tangential laws other than cundall_strack) appended members to LawCoeffs; version 2 and 3
+// files hold the first LAW_COEFFS_V2_SIZE / LAW_COEFFS_V3_SIZE bytes and are still read.
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 3;
+  const int version = 4;
   fwrite(&version, sizeof(int), 1, fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
@@ -553,10 +591,12 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version != 2 && version != 3)
+  if (version < 2 || version > 4)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads versions 2 and 3)");
-  const size_t nbytes = version == 3 ? sizeof(LawCoeffs) : tdem_lammps::LAW_COEFFS_V2_SIZE;
+                          " cannot be read (this build reads versions 2, 3 and 4)");
+  const size_t nbytes = version == 4   ? sizeof(LawCoeffs)
+                        : version == 3 ? tdem_lammps::LAW_COEFFS_V3_SIZE
+                                       : tdem_lammps::LAW_COEFFS_V2_SIZE;
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       if (me == 0) utils::sfread(FLERR, &setflag[i][j], sizeof(int), 1, fp, nullptr, error);
@@ -577,8 +617,11 @@ void PairTDEMGran::read_restart(FILE *fp)
 // (xi_max of walton_braun) do not. Used by FixNeighHistory when nondefault_history_transfer.
 void PairTDEMGran::transfer_history(double *source, double *target)
 {
-  for (int m = 0; m < tdem_lammps::TANGENTIAL_HISTORY; m++) target[m] = -source[m];
-  for (int m = tdem_lammps::TANGENTIAL_HISTORY; m < size_history; m++) target[m] = source[m];
+  // the tangential block: vectors flip (kernel HistorySlot::flips_sign), scalars do not
+  const int nt = tdem_lammps::tangential_history_size(utlaw);
+  for (int m = 0; m < nt && m < size_history; m++)
+    target[m] = tdem_lammps::tangential_slot_flips(utlaw, m) ? -source[m] : source[m];
+  for (int m = nt; m < size_history; m++) target[m] = source[m];
 }
 
 void PairTDEMGran::reset_dt()

@@ -57,7 +57,7 @@ class PairTDEMGran : public Pair {
   double radii2cut(double, double) override;
 
   // evaluation body, instantiated per (mode, end, slip); public for the dispatcher
-  template <int M, int E, int S> void eval(int eflag, int vflag);
+  template <int M, int E, int S, int TL> void eval(int eflag, int vflag);
 
  protected:
   double dt;
@@ -71,6 +71,7 @@ class PairTDEMGran : public Pair {
   std::vector<tdem_lammps::LawCoeffs> law;
   bool uniform;  // all set type pairs share mode, end and slip
   int umode, uend, uslip;
+  int utlaw;  // the tangential law of all type pairs (TangentialLaw)
 
   class FixNeighHistory *fix_history;
   std::string id_history, id_dummy;

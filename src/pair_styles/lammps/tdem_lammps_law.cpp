@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: argument parsing of the lsd + cundall_strack law (pair_coeff, wall fix).
+// tdem for LAMMPS: argument parsing of the normal and tangential laws (pair_coeff, wall fix).
 #include "tdem_lammps_law.h"
 
 #include "error.h"
 #include "lammps.h"
+
+#include "contact/tangential/parameters.h"
 
 #include <cerrno>
 #include <cmath>
@@ -51,7 +53,7 @@ int available(int narg, char **arg, int iarg) {
   static const char *const keywords[] = {"normal", "tangential", "damping", "limit_force",
                                          "slip", "xplane", "yplane", "zplane", "zcylinder",
                                          "wiggle", "shear", "e_fit", "tc_fit", "v_min",
-                                         "v_max", nullptr};
+                                         "v_max", "friction_limit", nullptr};
   int n = 0;
   for (; iarg + n < narg; ++n) {
     for (int k = 0; keywords[k]; ++k)
@@ -291,6 +293,83 @@ int parse_extended(LAMMPS *lmp, const std::string &where, bool hertz, int narg, 
   return iarg;
 }
 
+
+}  // namespace
+void derive_normal(LAMMPS *lmp, const std::string &where, LawCoeffs &c);
+std::string describe_normal(const LawCoeffs &c);
+namespace {
+
+const char *const TANGENTIAL_LAWS =
+    "cundall_strack, haff_werner, linear_spring, walton_braun, mindlin_deresiewicz, "
+    "mindlin_no_slip, di_renzo";
+
+// tangential haff_werner | linear_spring | walton_braun | mindlin_deresiewicz | mindlin_no_slip |
+// di_renzo with their values, at arg[iarg] (the first value); returns the next index.
+int parse_tangential(LAMMPS *lmp, const std::string &where, const std::string &name, int narg,
+                     char **arg, int iarg, LawCoeffs &c) {
+  const int n = available(narg, arg, iarg);
+  const std::string t = "tangential " + name + " ";
+  auto val = [&](int k, const char *key) { return number(lmp, where, t + key, arg[iarg + k]); };
+  auto count = [&](const std::string &names, int a, int b) {
+    if (n != a && n != b)
+      fail(lmp, where,
+           "tangential " + name + " needs " + std::to_string(a) +
+               (b != a ? " or " + std::to_string(b) : std::string()) + " values (" + names +
+               "), got " + std::to_string(n));
+  };
+  if (name == "haff_werner") {
+    c.tlaw = TLAW_HAFF_WERNER;
+    count("GAMMAT MU", 2, 2);
+    c.t_gammat = val(0, "GAMMAT");
+    c.t_mu = val(1, "MU");
+    non_negative(lmp, where, t + "GAMMAT (damping coefficient, mass/time)", c.t_gammat);
+  } else if (name == "linear_spring" || name == "walton_braun") {
+    const bool lin = name == "linear_spring";
+    c.tlaw = lin ? TLAW_LINEAR_SPRING : TLAW_WALTON_BRAUN;
+    count(lin ? "KT KAPPA GAMMAT MU" : "KT KAPPA MU", lin ? 4 : 3, lin ? 4 : 3);
+    c.t_kt = val(0, "KT");
+    c.t_kappa = val(1, "KAPPA");
+    if (lin) c.t_gammat = val(2, "GAMMAT");
+    c.t_mu = val(lin ? 3 : 2, "MU");
+    non_negative(lmp, where, t + "KT (constant stiffness, force/length)", c.t_kt);
+    non_negative(lmp, where, t + "KAPPA (k_t/k_n)", c.t_kappa);
+    if (!(c.t_kt > 0.0 || c.t_kappa > 0.0))
+      fail(lmp, where, t + "KT = " + num(c.t_kt) + ", KAPPA = " + num(c.t_kappa) +
+                           ": the stiffness KT + KAPPA k_n must be > 0 (give KT > 0 or KAPPA > 0)");
+    if (lin) non_negative(lmp, where, t + "GAMMAT (damping coefficient, mass/time)", c.t_gammat);
+  } else if (name == "mindlin_deresiewicz" || name == "mindlin_no_slip" || name == "di_renzo") {
+    const bool tsuji = name == "mindlin_no_slip";
+    c.tlaw = tsuji ? TLAW_MINDLIN_NO_SLIP
+             : name == "di_renzo" ? TLAW_DI_RENZO
+                                  : TLAW_MINDLIN_DERESIEWICZ;
+    const int base = tsuji ? 4 : 3;
+    count(tsuji ? "E NU [E2 NU2] RATIO MU" : "E NU [E2 NU2] MU", base, base + 2);
+    c.tE1 = val(0, "E");
+    positive(lmp, where, t + "E (Young's modulus)", c.tE1);
+    c.tnu1 = number(lmp, where, t + "NU", arg[iarg + 1]);
+    if (!(c.tnu1 > -1.0 && c.tnu1 < 0.5))
+      fail(lmp, where, t + "NU (Poisson ratio) = " + num(c.tnu1) + " is outside the allowed range (-1, 0.5)");
+    if (n == base + 2) {
+      c.tE2 = val(2, "E2");
+      positive(lmp, where, t + "E2 (Young's modulus)", c.tE2);
+      c.tnu2 = number(lmp, where, t + "NU2", arg[iarg + 3]);
+      if (!(c.tnu2 > -1.0 && c.tnu2 < 0.5))
+        fail(lmp, where, t + "NU2 (Poisson ratio) = " + num(c.tnu2) + " is outside the allowed range (-1, 0.5)");
+    } else {
+      c.tE2 = c.tE1;
+      c.tnu2 = c.tnu1;
+    }
+    if (tsuji) {
+      c.t_ratio = val(n - 2, "RATIO");
+      non_negative(lmp, where, t + "RATIO (eta_t/gamma_n)", c.t_ratio);
+    }
+    c.t_mu = val(n - 1, "MU");
+  } else {
+    fail(lmp, where, "tangential law '" + name + "' is unknown; allowed: " + TANGENTIAL_LAWS);
+  }
+  non_negative(lmp, where, t + "MU (friction coefficient)", c.t_mu);
+  return iarg + n;
+}
 }  // namespace
 
 int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
@@ -390,15 +469,13 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   // ---- tangential cundall_strack KT GAMMAT MU | tangential cundall_strack KAPPA MU
   if (iarg >= narg || strcmp(arg[iarg], "tangential") != 0)
     fail(lmp, where,
-         std::string("expected 'tangential cundall_strack ...' after the normal law, got '") +
+         std::string("expected 'tangential LAW ...' after the normal law (LAW: ") + TANGENTIAL_LAWS + "), got '" +
              (iarg < narg ? arg[iarg] : "end of line") + "'");
   if (iarg + 1 >= narg)
-    fail(lmp, where, "keyword 'tangential' needs a law name; allowed: cundall_strack");
-  if (strcmp(arg[iarg + 1], "cundall_strack") != 0)
-    fail(lmp, where,
-         std::string("tangential law '") + arg[iarg + 1] + "' is unknown; allowed: cundall_strack");
-  iarg += 2;
-  if (c.mode != MODE_STIFFNESS_MASS && c.mode != MODE_STIFFNESS_ABS) {
+    fail(lmp, where, std::string("keyword 'tangential' needs a law name; allowed: ") + TANGENTIAL_LAWS);
+  if (strcmp(arg[iarg + 1], "cundall_strack") != 0) {
+    iarg = parse_tangential(lmp, where, arg[iarg + 1], narg, arg, iarg + 2, c);
+  } else if ((iarg += 2), c.mode != MODE_STIFFNESS_MASS && c.mode != MODE_STIFFNESS_ABS) {
     need(lmp, where,
          std::string("tangential cundall_strack (with normal ") +
              (c.mode == MODE_HERTZ            ? "hertz"
@@ -462,6 +539,17 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       else if (v == "no") c.end = 0;
       else fail(lmp, where, "limit_force '" + v + "' is unknown; allowed: yes, no");
       iarg += 2;
+    } else if (key == "friction_limit") {
+      if (iarg + 1 >= narg)
+        fail(lmp, where, "keyword 'friction_limit' needs a value; allowed: absolute, positive_normal");
+      const std::string v = arg[iarg + 1];
+      if (c.tlaw == TLAW_CUNDALL_STRACK)
+        fail(lmp, where, "keyword 'friction_limit " + v + "' applies to the tangential laws other than "
+                         "cundall_strack (cundall_strack always uses mu |F_n|)");
+      if (v == "absolute") c.tlimit = 0;
+      else if (v == "positive_normal") c.tlimit = 1;
+      else fail(lmp, where, "friction_limit '" + v + "' is unknown; allowed: absolute, positive_normal");
+      iarg += 2;
     } else if (key == "slip") {
       if (iarg + 1 >= narg)
         fail(lmp, where, "keyword 'slip' needs a value; allowed: spring_dashpot, spring");
@@ -476,7 +564,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       fail(lmp, where,
            "unexpected argument '" + key +
                "'; allowed options: damping mass|absolute, limit_force yes|no, "
-               "slip spring_dashpot|spring");
+               "slip spring_dashpot|spring, friction_limit absolute|positive_normal");
     }
   }
   (void) damping_given;
@@ -485,6 +573,29 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
 }
 
 void derive_law(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
+  derive_normal(lmp, where, c);
+  // the tangential laws other than cundall_strack: G* and the kernel's own checks
+  if (c.tlaw == TLAW_CUNDALL_STRACK) return;
+  const std::string t = std::string("tangential ") + tangential_name(c.tlaw);
+  try {
+    const auto lim = friction_limit(c.tlimit);
+    if (c.tlaw == TLAW_MINDLIN_DERESIEWICZ || c.tlaw == TLAW_MINDLIN_NO_SLIP || c.tlaw == TLAW_DI_RENZO)
+      c.t_gstar = tdem::tangential::effective_shear_modulus_from_E(c.tE1, c.tnu1, c.tE2, c.tnu2);
+    if (c.tlaw == TLAW_HAFF_WERNER) tdem::haff_werner::validate({c.t_gammat, c.t_mu, lim});
+    else if (c.tlaw == TLAW_LINEAR_SPRING)
+      tdem::linear_spring::validate({c.t_kt, c.t_kappa, c.t_gammat, c.t_mu, lim, slip_reset(c.slip)});
+    else if (c.tlaw == TLAW_WALTON_BRAUN)
+      tdem::walton_braun_tangential::validate({c.t_kt, c.t_kappa, c.t_mu, lim});
+    else if (c.tlaw == TLAW_MINDLIN_DERESIEWICZ) tdem::mindlin_deresiewicz::validate({c.t_gstar, c.t_mu, lim});
+    else if (c.tlaw == TLAW_MINDLIN_NO_SLIP)
+      tdem::mindlin_no_slip::validate({c.t_gstar, c.t_ratio, c.t_mu, lim, slip_reset(c.slip)});
+    else tdem::di_renzo::validate({c.t_gstar, c.t_mu, lim});
+  } catch (const std::exception &ex) {
+    fail(lmp, where, t + ": " + ex.what());
+  }
+}
+
+void derive_normal(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
   if (c.mode == MODE_EXT_HERTZ || c.mode == MODE_EXT_LINEAR) {
     const std::string law = c.mode == MODE_EXT_HERTZ ? "extended_hertz" : "extended_linear";
     try {
@@ -548,7 +659,34 @@ void derive_law(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
              " gives no finite stiffness and damping");
 }
 
+const char *tangential_name(int tlaw) {
+  static const char *const names[] = {"cundall_strack", "haff_werner", "linear_spring", "walton_braun",
+                                      "mindlin_deresiewicz", "mindlin_no_slip", "di_renzo"};
+  return tlaw >= 0 && tlaw < TLAW_COUNT ? names[tlaw] : "unknown";
+}
+
 std::string describe_law(const LawCoeffs &c) {
+  std::string s = describe_normal(c);
+  if (c.tlaw == TLAW_CUNDALL_STRACK) return s;
+  // replace the cundall_strack part by the tangential law in use
+  const size_t at = s.find(" tangential cundall_strack");
+  const size_t opt = s.find(" limit_force ");
+  std::string t = std::string(" tangential ") + tangential_name(c.tlaw);
+  if (c.tlaw == TLAW_HAFF_WERNER) t += " gammat=" + num(c.t_gammat);
+  else if (c.tlaw == TLAW_LINEAR_SPRING || c.tlaw == TLAW_WALTON_BRAUN) {
+    t += " kt=" + num(c.t_kt) + " kappa=" + num(c.t_kappa) + " (k_t = kt + kappa k_n)";
+    if (c.tlaw == TLAW_LINEAR_SPRING) t += " gammat=" + num(c.t_gammat);
+  } else {
+    t += " E1=" + num(c.tE1) + " nu1=" + num(c.tnu1) + " E2=" + num(c.tE2) + " nu2=" + num(c.tnu2) +
+         " (G*=" + num(c.t_gstar) + ")";
+    if (c.tlaw == TLAW_MINDLIN_NO_SLIP) t += " ratio=" + num(c.t_ratio) + " (eta_t = ratio gamma_n)";
+  }
+  t += " mu=" + num(c.t_mu) + " friction_limit " + (c.tlimit ? "positive_normal" : "absolute");
+  if (at != std::string::npos && opt != std::string::npos && opt > at) s = s.substr(0, at) + t + s.substr(opt);
+  return s;
+}
+
+std::string describe_normal(const LawCoeffs &c) {
   std::string s = "normal lsd ";
   auto fit = [](const tdem::fits::Fit &f, char what) {
     std::string t = tdem::fits::to_string(f.form);

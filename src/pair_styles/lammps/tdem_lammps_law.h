@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LAMMPS: the normal laws lsd (tdem::lsd), hertz (tdem::hertz), walton_braun,
 // thornton, power_law (tdem::power_law), extended_linear and extended_hertz (tdem::extended)
-// with the Cundall-Strack tangential law (tdem::cundall_strack), as used by pair tdem/gran and
-// fix tdem/wall/gran. The lsd modes run on compile-time specialised paths (M = LawMode 0..2,
-// end and slip fixed too), the other laws on paths specialised for the law (M = 3..8, end and
-// slip read at run time); type pairs with different laws use the run-time path (M = -1).
+// with the Cundall-Strack tangential law (tdem::cundall_strack) or one of the tangential laws of
+// src/contact/tangential/ (haff_werner, linear_spring, walton_braun_tangential,
+// mindlin_deresiewicz, mindlin_no_slip, di_renzo), as used by pair tdem/gran and fix
+// tdem/wall/gran. With cundall_strack the lsd modes run on compile-time specialised paths
+// (M = LawMode 0..2, end and slip fixed too), the other laws on paths specialised for the law
+// (M = 3..8, end and slip read at run time); type pairs with different laws use the run-time
+// path (M = -1). The other tangential laws run on one path per law (TL fixed at compile time,
+// the normal law read at run time).
 //
 // This header is host-specific glue: it holds the per-type-pair coefficients, the argument
 // parser shared by pair_coeff and the wall fix (tdem_lammps_law.cpp), and the per-contact
@@ -25,6 +29,12 @@
 #include "contact/normal/thornton.h"
 #include "contact/normal/walton_braun.h"
 #include "contact/tangential/cundall_strack.h"
+#include "contact/tangential/di_renzo.h"
+#include "contact/tangential/haff_werner.h"
+#include "contact/tangential/linear_spring.h"
+#include "contact/tangential/mindlin_deresiewicz.h"
+#include "contact/tangential/mindlin_no_slip.h"
+#include "contact/tangential/walton_braun_tangential.h"
 
 #include <cmath>
 #include <cstddef>
@@ -54,31 +64,78 @@ enum LawMode : int {
                             // kt = KAPPA dF/dxi (Hertz tangent); history v0, alpha
 };
 
-// History values per contact: 3 (tangential spring) + the normal law's own slots.
-inline constexpr int TANGENTIAL_HISTORY = 3;
-constexpr int history_size(int mode) {
-  return TANGENTIAL_HISTORY + (mode == MODE_WALTON_BRAUN ? tdem::walton_braun::history_size
-                               : mode == MODE_THORNTON   ? tdem::thornton::history_size
-                               : mode == MODE_POWER_LAW  ? tdem::power_law::history_size
-                               : mode == MODE_EXT_LINEAR ? tdem::extended::linear_history_size
-                               : mode == MODE_EXT_HERTZ  ? tdem::extended::hertz_history_size
-                                                         : 0);
+// Tangential laws (LawCoeffs::tlaw). cundall_strack is the original path (bitwise equal to
+// gran/hooke/history with normal lsd stiffness); the others run the kernels of
+// src/contact/tangential/ on the common TangentialKinematics interface.
+enum TangentialLaw : int {
+  TLAW_CUNDALL_STRACK = 0,
+  TLAW_HAFF_WERNER = 1,        // tangential haff_werner GAMMAT MU
+  TLAW_LINEAR_SPRING = 2,      // tangential linear_spring KT KAPPA GAMMAT MU
+  TLAW_WALTON_BRAUN = 3,       // tangential walton_braun KT KAPPA MU
+  TLAW_MINDLIN_DERESIEWICZ = 4,  // tangential mindlin_deresiewicz E NU [E2 NU2] MU
+  TLAW_MINDLIN_NO_SLIP = 5,    // tangential mindlin_no_slip E NU [E2 NU2] RATIO MU
+  TLAW_DI_RENZO = 6            // tangential di_renzo E NU [E2 NU2] MU
+};
+inline constexpr int TLAW_COUNT = 7;
+const char *tangential_name(int tlaw);
+
+// History values per contact: the tangential block (3 for the spring laws and Haff-Werner, whose
+// slots stay unused, 8 walton_braun, 13 mindlin_deresiewicz) first, then the normal law's slots.
+inline constexpr int TANGENTIAL_HISTORY = 3;  // the block of cundall_strack
+constexpr int tangential_history_size(int tlaw) {
+  return tlaw == TLAW_WALTON_BRAUN          ? tdem::walton_braun_tangential::history_size
+         : tlaw == TLAW_MINDLIN_DERESIEWICZ ? tdem::mindlin_deresiewicz::history_size
+                                            : TANGENTIAL_HISTORY;
+}
+constexpr int normal_history_size(int mode) {
+  return mode == MODE_WALTON_BRAUN ? tdem::walton_braun::history_size
+         : mode == MODE_THORNTON   ? tdem::thornton::history_size
+         : mode == MODE_POWER_LAW  ? tdem::power_law::history_size
+         : mode == MODE_EXT_LINEAR ? tdem::extended::linear_history_size
+         : mode == MODE_EXT_HERTZ  ? tdem::extended::hertz_history_size
+                                   : 0;
+}
+constexpr int history_size(int mode, int tlaw = TLAW_CUNDALL_STRACK) {
+  return tangential_history_size(tlaw) + normal_history_size(mode);
+}
+// Does history slot m (< tangential_history_size(tlaw)) change sign when the pair is seen from
+// the other particle? (the kernels' HistorySlot::flips_sign; all three for the spring laws)
+inline bool tangential_slot_flips(int tlaw, int m) {
+  if (tlaw == TLAW_WALTON_BRAUN) return tdem::walton_braun_tangential::history[m].flips_sign;
+  if (tlaw == TLAW_MINDLIN_DERESIEWICZ) return tdem::mindlin_deresiewicz::history[m].flips_sign;
+  return m < TANGENTIAL_HISTORY;
 }
 
-// The largest history_size of any mode (tangential spring + extended_linear's v0, k, gamma).
-inline constexpr int MAX_HISTORY = TANGENTIAL_HISTORY + tdem::extended::linear_history_size;
-static_assert(history_size(MODE_THORNTON) <= MAX_HISTORY && history_size(MODE_EXT_HERTZ) <= MAX_HISTORY &&
-                  history_size(MODE_POWER_LAW) <= MAX_HISTORY && history_size(MODE_WALTON_BRAUN) <= MAX_HISTORY,
-              "MAX_HISTORY must cover every law");
+// The largest number of normal-law slots (extended_linear's v0, k, gamma) and of history values.
+inline constexpr int MAX_NORMAL_HISTORY = tdem::extended::linear_history_size;
+inline constexpr int MAX_HISTORY = tdem::mindlin_deresiewicz::history_size + MAX_NORMAL_HISTORY;
+static_assert(normal_history_size(MODE_THORNTON) <= MAX_NORMAL_HISTORY &&
+                  normal_history_size(MODE_EXT_HERTZ) <= MAX_NORMAL_HISTORY &&
+                  normal_history_size(MODE_POWER_LAW) <= MAX_NORMAL_HISTORY &&
+                  normal_history_size(MODE_WALTON_BRAUN) <= MAX_NORMAL_HISTORY,
+              "MAX_NORMAL_HISTORY must cover every law");
 
-// Zero the normal-law slots of a contact's history (hsize values in all). Explicit stores:
-// a loop of run-time length here became a memset call per non-touching neighbour (~20 % of
-// the pair time of the history laws).
+// Zero the normal-law slots of a contact's history (hsize values in all; cundall_strack layout).
+// Explicit stores: a loop of run-time length here became a memset call per non-touching
+// neighbour (~20 % of the pair time of the history laws).
 inline void clear_law_history(double *shear, int hsize) {
-  static_assert(MAX_HISTORY - TANGENTIAL_HISTORY == 3, "adapt clear_law_history");
+  static_assert(MAX_NORMAL_HISTORY == 3, "adapt clear_law_history");
   if (hsize > TANGENTIAL_HISTORY) shear[TANGENTIAL_HISTORY] = 0.0;
   if (hsize > TANGENTIAL_HISTORY + 1) shear[TANGENTIAL_HISTORY + 1] = 0.0;
   if (hsize > TANGENTIAL_HISTORY + 2) shear[TANGENTIAL_HISTORY + 2] = 0.0;
+}
+
+// Zero the whole history of a contact of tangential law TL (> 0) with hsize values in all: the
+// tangential block has a compile-time length, the normal slots are explicit stores (a loop of
+// run-time length becomes a memset call per non-touching neighbour).
+template <int TL>
+inline void clear_history(double *shear, int hsize) {
+  static_assert(MAX_NORMAL_HISTORY == 3, "adapt clear_history");
+  constexpr int nt = tangential_history_size(TL);
+  for (int m = 0; m < nt; m++) shear[m] = 0.0;
+  if (hsize > nt) shear[nt] = 0.0;
+  if (hsize > nt + 1) shear[nt + 1] = 0.0;
+  if (hsize > nt + 2) shear[nt + 2] = 0.0;
 }
 
 // Damping member of normal hertz (values of LawCoeffs::hdamp).
@@ -122,12 +179,27 @@ struct LawCoeffs {
   // t_c(v0) (linear only) and the impact-velocity clamp; extended_hertz keeps its materials in
   // E1 .. estar (k~ = 4/3 E* sqrt(R*) per contact)
   tdem::extended::LinearParams ext;
+  // ---- restart format version 4 appends the members below (version 3 files end here)
+  // tangential law other than cundall_strack (tlaw != 0; the cundall_strack members are kt,
+  // gammat, kappa, mu above)
+  int tlaw = TLAW_CUNDALL_STRACK;
+  int tlimit = 0;  // FrictionLimit: 0 absolute (mu |F_n|), 1 positive_normal (mu max(F_n, 0))
+  double t_kt = 0, t_kappa = 0, t_gammat = 0, t_mu = 0, t_ratio = 0;
+  // materials of the two partners of the Mindlin-type laws, and the derived G*
+  double tE1 = 0, tnu1 = 0, tE2 = 0, tnu2 = 0, t_gstar = 0;
 };
-// Bytes of LawCoeffs in restart files of version 2 (before the members of version 3).
+// Bytes of LawCoeffs in restart files of version 2 (before the members of version 3) and 3.
 inline constexpr size_t LAW_COEFFS_V2_SIZE = offsetof(LawCoeffs, pl);
+inline constexpr size_t LAW_COEFFS_V3_SIZE = offsetof(LawCoeffs, tlaw);
 
 inline tdem::ContactEnd contact_end(int end) {
   return end ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
+}
+inline tdem::tangential::FrictionLimit friction_limit(int l) {
+  return l ? tdem::tangential::FrictionLimit::positive_normal : tdem::tangential::FrictionLimit::absolute;
+}
+inline tdem::tangential::SlipReset slip_reset(int slip) {
+  return slip ? tdem::tangential::SlipReset::spring_and_dashpot : tdem::tangential::SlipReset::spring_only;
 }
 inline tdem::cundall_strack::SlipRule slip_rule(int slip) {
   return slip ? tdem::cundall_strack::SlipRule::spring_dashpot_cap
@@ -153,15 +225,26 @@ std::string describe_law(const LawCoeffs &c);
 // vr = relative translational velocity v_i - v_j, wr = relative rotational term
 // (rad_i w_i + rad_j w_j)/r. Writes ccel (normal force over r, along del) and the tangential
 // force fs on i. M, E, S are LawMode, end, slip; -1 reads them from c at run time.
-template <int M, int E, int S>
+//
+// TL is the tangential law (TangentialLaw; -1 reads c.tlaw). The laws other than cundall_strack
+// also need the angular velocities omega_i, omega_j (omega_j = nullptr: a plane wall) for the
+// twist spin_n = (omega_i + omega_j)/2 . n, and take the turning rate of the normal
+// omega_t = n x (v_i - v_j)/r for a pair (radj > 0), 0 for a wall.
+template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK>
 inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, double dely,
                              double delz, double r, double rinv, double rsqinv, double overlap,
                              double vr1, double vr2, double vr3, double wr1, double wr2,
                              double wr3, double dt, bool update, double *shear, double &ccel,
-                             double *fs, double radi = 0.0, double radj = 0.0) {
+                             double *fs, double radi = 0.0, double radj = 0.0,
+                             const double *omega_i = nullptr, const double *omega_j = nullptr) {
   const int mode = M >= 0 ? M : c.mode;
   const int end = E >= 0 ? E : c.end;
   const int slip = S >= 0 ? S : c.slip;
+  const int tlaw = TL >= 0 ? TL : c.tlaw;
+  // the normal law's slots follow the tangential block
+  const int toff = tlaw == TLAW_CUNDALL_STRACK ? TANGENTIAL_HISTORY : tangential_history_size(tlaw);
+  // normal tangent stiffness and damping coefficient of this step (for the tangential law)
+  double kn_used = 0.0, gn_used = 0.0;
 
   // normal component of the relative velocity, tangential rest
   const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
@@ -208,6 +291,7 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.reff = reff;
     const auto res = tdem::hertz::force(hertz_damping(c.hdamp), contact_end(end), hp, kin);
     ccel = res.force * rinv;
+    kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * 2 E* a, tangent stiffness dF/dxi
     tp.gammat = 0.0;
   } else if (mode == MODE_WALTON_BRAUN) {
@@ -221,8 +305,9 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = 0.0;
-    const auto res = tdem::walton_braun::force(wp, kin, shear + TANGENTIAL_HISTORY, update);
+    const auto res = tdem::walton_braun::force(wp, kin, shear + toff, update);
     ccel = res.force * rinv;
+    kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * c.wb_kl;
     tp.gammat = 0.0;
   } else if (mode == MODE_THORNTON) {
@@ -236,8 +321,9 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = reff;
-    const auto res = tdem::thornton::force(thp, kin, shear + TANGENTIAL_HISTORY, update);
+    const auto res = tdem::thornton::force(thp, kin, shear + toff, update);
     ccel = res.force * rinv;
+    kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * 2.0 * c.estar * sqrt(reff * overlap);  // KAPPA * 2 E* a (Hertz tangent)
     tp.gammat = 0.0;
   } else if (mode == MODE_POWER_LAW) {
@@ -247,8 +333,9 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = 0.0;
-    const auto res = tdem::power_law::force(c.pl, kin, shear + TANGENTIAL_HISTORY, update);
+    const auto res = tdem::power_law::force(c.pl, kin, shear + toff, update);
     ccel = res.force * rinv;
+    kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi of the branch in use
     tp.gammat = 0.0;
   } else if (mode == MODE_EXT_LINEAR) {
@@ -258,11 +345,12 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = 0.0;
-    double *h = shear + TANGENTIAL_HISTORY;
+    double *h = shear + toff;
     const auto res =
         end ? tdem::extended::linear_force<tdem::ContactEnd::zero_force>(c.ext, kin, h, update)
             : tdem::extended::linear_force<tdem::ContactEnd::zero_overlap>(c.ext, kin, h, update);
     ccel = res.force * rinv;
+    kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * k(v0)
     tp.gammat = 0.0;
   } else if (mode == MODE_EXT_HERTZ) {
@@ -275,17 +363,21 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = reff;
-    double *h = shear + TANGENTIAL_HISTORY;
+    double *h = shear + toff;
     const auto res =
         end ? tdem::extended::hertz_force<tdem::ContactEnd::zero_force>(hp, kin, h, update)
             : tdem::extended::hertz_force<tdem::ContactEnd::zero_overlap>(hp, kin, h, update);
     ccel = res.force * rinv;
+    kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi (Hertz tangent 3/2 k~ sqrt(xi))
     tp.gammat = 0.0;
-  } else if (end)
-    ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_force>(nc, overlap, vnnr, rinv, rsqinv);
-  else
-    ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_overlap>(nc, overlap, vnnr, rinv, rsqinv);
+  } else {
+    kn_used = nc.k, gn_used = nc.gamma;
+    if (end)
+      ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_force>(nc, overlap, vnnr, rinv, rsqinv);
+    else
+      ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_overlap>(nc, overlap, vnnr, rinv, rsqinv);
+  }
 
   // relative velocity of the contact point
   tdem::cundall_strack::Kinematics<double> tk;
@@ -297,6 +389,54 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
   tk.vt[1] = vt2 - (delx * wr3 - delz * wr1);
   tk.vt[2] = vt3 - (dely * wr1 - delx * wr2);
   tk.dt = dt;
+
+  if (tlaw != TLAW_CUNDALL_STRACK) {
+    // the laws of src/contact/tangential/ on the common interface
+    tdem::tangential::TangentialKinematics<double> k;
+    k.n[0] = delx * rinv;
+    k.n[1] = dely * rinv;
+    k.n[2] = delz * rinv;
+    k.vt[0] = tk.vt[0];
+    k.vt[1] = tk.vt[1];
+    k.vt[2] = tk.vt[2];
+    double ws0 = omega_i ? omega_i[0] : 0.0, ws1 = omega_i ? omega_i[1] : 0.0,
+           ws2 = omega_i ? omega_i[2] : 0.0;
+    if (omega_j) ws0 += omega_j[0], ws1 += omega_j[1], ws2 += omega_j[2];
+    k.spin_n = 0.5 * (ws0 * k.n[0] + ws1 * k.n[1] + ws2 * k.n[2]);
+    k.dt = dt;
+    k.overlap = overlap > 0.0 ? overlap : 0.0;
+    k.meff = meff;
+    k.reff = radj > 0.0 ? radi * radj / (radi + radj) : radi;
+    k.fn = ccel * r;
+    k.kn = kn_used;
+    k.gamman = gn_used;
+    if (radj > 0.0) {  // n x (v_i - v_j) / r = (del x vr) / r^2
+      k.omega_t[0] = (dely * vr3 - delz * vr2) * rsqinv;
+      k.omega_t[1] = (delz * vr1 - delx * vr3) * rsqinv;
+      k.omega_t[2] = (delx * vr2 - dely * vr1) * rsqinv;
+    }
+    const auto lim = friction_limit(c.tlimit);
+    if (tlaw == TLAW_HAFF_WERNER) {
+      const tdem::haff_werner::Params<double> p{c.t_gammat, c.t_mu, lim};
+      tdem::haff_werner::force(p, k, shear, update, fs);
+    } else if (tlaw == TLAW_LINEAR_SPRING) {
+      const tdem::linear_spring::Params<double> p{c.t_kt, c.t_kappa, c.t_gammat, c.t_mu, lim, slip_reset(slip)};
+      tdem::linear_spring::force(p, k, shear, update, fs);
+    } else if (tlaw == TLAW_WALTON_BRAUN) {
+      const tdem::walton_braun_tangential::Params<double> p{c.t_kt, c.t_kappa, c.t_mu, lim};
+      tdem::walton_braun_tangential::force(p, k, shear, update, fs);
+    } else if (tlaw == TLAW_MINDLIN_DERESIEWICZ) {
+      const tdem::mindlin_deresiewicz::Params<double> p{c.t_gstar, c.t_mu, lim};
+      tdem::mindlin_deresiewicz::force(p, k, shear, update, fs);
+    } else if (tlaw == TLAW_MINDLIN_NO_SLIP) {
+      const tdem::mindlin_no_slip::Params<double> p{c.t_gstar, c.t_ratio, c.t_mu, lim, slip_reset(slip)};
+      tdem::mindlin_no_slip::force(p, k, shear, update, fs);
+    } else {
+      const tdem::di_renzo::Params<double> p{c.t_gstar, c.t_mu, lim};
+      tdem::di_renzo::force(p, k, shear, update, fs);
+    }
+    return;
+  }
 
   // tangential law (normal force magnitude ccel*r)
   if (slip)
@@ -310,8 +450,24 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
 // Dispatch helper: calls F.template run<M,E,S>() for the combination (all compile-time; the
 // laws other than lsd with the law fixed at compile time and end, slip read at run time) or
 // the run-time fallback run<-1,-1,-1>() when `uniform` is false.
+// The tangential laws other than cundall_strack (one law for all type pairs) are fixed at
+// compile time with the normal law read at run time: run<-1, -1, -1, TL>().
 template <class F>
-inline void dispatch(bool uniform, int mode, int end, int slip, F &&f) {
+inline void dispatch(bool uniform, int mode, int end, int slip, int tlaw, F &&f) {
+  if (tlaw != TLAW_CUNDALL_STRACK) {
+    // the normal law fixed too for the most common ones: lsd stiffness (damping mass) and hertz
+#define TDEM_LMP_TCASE(t)                                                                   \
+  if (tlaw == t) {                                                                          \
+    if (uniform && mode == MODE_STIFFNESS_MASS) return f.template run<MODE_STIFFNESS_MASS, -1, -1, t>(); \
+    if (uniform && mode == MODE_HERTZ) return f.template run<MODE_HERTZ, -1, -1, t>();    \
+    return f.template run<-1, -1, -1, t>();                                                 \
+  }
+    TDEM_LMP_TCASE(TLAW_HAFF_WERNER) TDEM_LMP_TCASE(TLAW_LINEAR_SPRING)
+    TDEM_LMP_TCASE(TLAW_WALTON_BRAUN) TDEM_LMP_TCASE(TLAW_MINDLIN_DERESIEWICZ)
+    TDEM_LMP_TCASE(TLAW_MINDLIN_NO_SLIP) TDEM_LMP_TCASE(TLAW_DI_RENZO)
+#undef TDEM_LMP_TCASE
+    return;  // not reached: tlaw is one of the laws above
+  }
   if (!uniform) return f.template run<-1, -1, -1>();
 #define TDEM_LMP_CASE(m, e, s) \
   if (mode == m && end == e && slip == s) return f.template run<m, e, s>();

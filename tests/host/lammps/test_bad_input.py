@@ -156,6 +156,39 @@ CASES = [
      ["fix w tdem/wall/gran", "normal power_law needs 3 or 4 values (AL P AUL [Q]), got 5"]),
     ("unknown tangential law", pair("normal lsd stiffness 2000 50 tangential mindlin 600 25 0.5"),
      ["tangential law 'mindlin' is unknown", "allowed: cundall_strack"]),
+    # the tangential laws of issue 4
+    ("haff_werner count", pair("normal lsd stiffness 2000 50 tangential haff_werner 20"),
+     ["tangential haff_werner needs 2 values (GAMMAT MU), got 1"]),
+    ("haff_werner negative gamma", pair("normal lsd stiffness 2000 50 tangential haff_werner -20 0.5"),
+     ["tangential haff_werner GAMMAT (damping coefficient, mass/time) = -20 must be >= 0"]),
+    ("linear_spring count", pair("normal lsd stiffness 2000 50 tangential linear_spring 600 0 25"),
+     ["tangential linear_spring needs 4 values (KT KAPPA GAMMAT MU), got 3"]),
+    ("linear_spring no stiffness", pair("normal lsd stiffness 2000 50 tangential linear_spring 0 0 25 0.5"),
+     ["tangential linear_spring KT = 0, KAPPA = 0", "must be > 0"]),
+    ("linear_spring negative kappa", pair("normal lsd stiffness 2000 50 tangential linear_spring 600 -1 25 0.5"),
+     ["tangential linear_spring KAPPA (k_t/k_n) = -1 must be >= 0"]),
+    ("walton_braun negative mu", pair("normal lsd stiffness 2000 50 tangential walton_braun 600 0 -0.5"),
+     ["tangential walton_braun MU (friction coefficient) = -0.5 must be >= 0"]),
+    ("mindlin_deresiewicz count", pair("normal hertz 2e8 0.3 tangential mindlin_deresiewicz 2e8 0.3"),
+     ["tangential mindlin_deresiewicz needs 3 or 5 values (E NU [E2 NU2] MU), got 2"]),
+    ("mindlin_deresiewicz nu 0.5", pair("normal hertz 2e8 0.3 tangential mindlin_deresiewicz 2e8 0.5 0.5"),
+     ["tangential mindlin_deresiewicz NU (Poisson ratio) = 0.5 is outside the allowed range (-1, 0.5)"]),
+    ("mindlin_no_slip negative ratio", pair("normal hertz 2e8 0.3 tangential mindlin_no_slip 2e8 0.3 -1 0.5"),
+     ["tangential mindlin_no_slip RATIO (eta_t/gamma_n) = -1 must be >= 0"]),
+    ("di_renzo negative E2", pair("normal hertz 2e8 0.3 tangential di_renzo 2e8 0.3 -1e8 0.3 0.5"),
+     ["tangential di_renzo E2 (Young's modulus) = -100000000 must be > 0"]),
+    ("di_renzo E not a number", pair("normal hertz 2e8 0.3 tangential di_renzo abc 0.3 0.5"),
+     ["tangential di_renzo E expects a finite number, got 'abc'"]),
+    ("friction_limit unknown", pair("normal lsd stiffness 2000 50 tangential haff_werner 20 0.5 friction_limit half"),
+     ["friction_limit 'half' is unknown; allowed: absolute, positive_normal"]),
+    ("friction_limit with cundall_strack", pair(GOOD + " friction_limit absolute"),
+     ["keyword 'friction_limit absolute' applies to the tangential laws other than cundall_strack"]),
+    ("mixed tangential laws", "pair_style tdem/gran\npair_coeff 1 1 " + GOOD + "\npair_coeff 2 2 " + GOOD +
+     "\npair_coeff 1 2 normal lsd stiffness 2000 50 tangential haff_werner 20 0.5",
+     ["tangential law", "all type pairs must use the same tangential law"]),
+    ("wall mindlin_no_slip count", pair(GOOD) + "\n" + WALL.format(
+        law="normal hertz 2e8 0.3 tangential mindlin_no_slip 2e8 0.3 0.5", wall="zplane 0 NULL"),
+     ["fix w tdem/wall/gran", "tangential mindlin_no_slip needs 4 or 6 values (E NU [E2 NU2] RATIO MU), got 3"]),
     ("unknown parametrisation", pair("normal lsd damped 2000 50 tangential cundall_strack 600 25 0.5"),
      ["parametrisation 'damped' is unknown", "stiffness KN GAMMAN", "restitution E TC"]),
     ("missing normal value", pair("normal lsd stiffness 2000 tangential cundall_strack 600 25 0.5"),
@@ -163,7 +196,7 @@ CASES = [
     ("missing tangential value", pair("normal lsd stiffness 2000 50 tangential cundall_strack 600 25"),
      ["needs 3 values (KT GAMMAT MU), got 2"]),
     ("too many normal values", pair("normal lsd stiffness 2000 50 7 tangential cundall_strack 600 25 0.5"),
-     ["expected 'tangential cundall_strack ...' after the normal law, got '7'"]),
+     ["expected 'tangential LAW ...' after the normal law", "got '7'"]),
     ("restitution tangential count", pair("normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8"),
      ["needs 2 values (KAPPA MU), got 1"]),
     ("negative KN", pair("normal lsd stiffness -2000 50 tangential cundall_strack 600 25 0.5"),
@@ -245,6 +278,15 @@ for name, body in (("good stiffness", pair(GOOD) + "\n" + WALL.format(law=GOOD, 
                     "tangential cundall_strack 0.8 0.5\n" + WALL.format(
                         law="normal extended_hertz 2e8 0.3 1e9 0.2 e_fit rational 1 1 0.2 v_max 5 tangential cundall_strack 0.8 0.5",
                         wall="zplane 0 NULL")),
+                   ("good tangential laws", "pair_style tdem/gran\npair_coeff 1 1 normal hertz 2e8 0.3 tangential "
+                    "mindlin_deresiewicz 2e8 0.3 0.5\npair_coeff 2 2 normal hertz 1e8 0.25 tangential mindlin_deresiewicz "
+                    "1e8 0.25 0.5\n" +
+                    "\n".join(WALL.format(law=l, wall="zplane 0 NULL").replace("fix w ", "fix w%d " % k) for k, l in enumerate((
+                        "normal lsd stiffness 2000 50 tangential haff_werner 20 0.5 friction_limit positive_normal",
+                        "normal lsd restitution 0.6 1e-4 tangential linear_spring 0 0.8 0.1 0.5 slip spring",
+                        "normal walton_braun 1e5 2e5 tangential walton_braun 100 0.5 0.5",
+                        "normal hertz 2e8 0.3 damping tsuji 0.7 tangential mindlin_no_slip 2e8 0.3 1e9 0.2 1 0.5",
+                        "normal extended_hertz 2e8 0.3 e_fit constant 0.6 tangential di_renzo 2e8 0.3 0.5")))),
                    ("good hertz mixed", "pair_style tdem/gran\npair_coeff 1 1 " + GOODH + "\npair_coeff 2 2 "
                     + GOODH.replace("2e8 0.3", "1e8 0.25") + "\n" + WALL.format(law=GOODH.replace("0.3", "0.3 1e9 0.2"), wall="zplane 0 NULL"))):
     rc, out = lc.run(args["tdem"], BASE.format(body=body).replace("0.05 0.05", "0 0"), wd, "in.good", check=False)
