@@ -22,6 +22,7 @@
 #include "normal_model_tdem_extended_linear.h"
 #include "normal_model_tdem_extended_hertz.h"
 #include "tangential_model_tdem_cundall_strack.h"
+#include "tangential_model_tdem_laws.h"
 
 namespace tdem {
 namespace liggghts {
@@ -65,6 +66,12 @@ void register_continuous_potential();
 void register_power_law();
 void register_extended_linear();
 void register_extended_hertz();
+void register_tangential_haff_werner();
+void register_tangential_linear_spring();
+void register_tangential_walton_braun();
+void register_tangential_mindlin_deresiewicz();
+void register_tangential_mindlin_no_slip();
+void register_tangential_di_renzo();
 
 }  // namespace detail
 }  // namespace liggghts

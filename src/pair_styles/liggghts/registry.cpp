@@ -83,6 +83,12 @@ const Names& names() {
     r.normal[TDEM_EXTENDED_LINEAR] = kNormalExtendedLinearName;
     r.normal[TDEM_EXTENDED_HERTZ] = kNormalExtendedHertzName;
     r.tangential[TDEM_CUNDALL_STRACK] = kTangentialCundallStrackName;
+    r.tangential[TDEM_HAFF_WERNER] = kTangentialHaffWernerName;
+    r.tangential[TDEM_LINEAR_SPRING] = kTangentialLinearSpringName;
+    r.tangential[TDEM_WALTON_BRAUN_T] = kTangentialWaltonBraunName;
+    r.tangential[TDEM_MINDLIN_DERESIEWICZ] = kTangentialMindlinDeresiewiczName;
+    r.tangential[TDEM_MINDLIN_NO_SLIP] = kTangentialMindlinNoSlipName;
+    r.tangential[TDEM_DI_RENZO] = kTangentialDiRenzoName;
     return r;
   }();
   return n;
@@ -165,7 +171,8 @@ int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models
   const int normal = static_cast<int>(hash & 63), tangential = static_cast<int>((hash >> 6) & 63);
   if ((normal == TDEM_LSD || normal == TDEM_HERTZ || normal == TDEM_WALTON_BRAUN ||
        normal == TDEM_THORNTON || normal == TDEM_CONTINUOUS_POTENTIAL || normal == TDEM_POWER_LAW ||
-       normal == TDEM_EXTENDED_LINEAR || normal == TDEM_EXTENDED_HERTZ || tangential == TDEM_CUNDALL_STRACK) &&
+       normal == TDEM_EXTENDED_LINEAR || normal == TDEM_EXTENDED_HERTZ || tangential == TDEM_CUNDALL_STRACK ||
+       (tangential >= TDEM_HAFF_WERNER && tangential <= TDEM_DI_RENZO)) &&
       !compiled().count(hash)) {
     std::string list;
     for (int64_t h : compiled()) list += "\n  " + describe(h);
@@ -195,6 +202,12 @@ void register_styles() {
   models.addNormalModel(kNormalExtendedLinearName, TDEM_EXTENDED_LINEAR);
   models.addNormalModel(kNormalExtendedHertzName, TDEM_EXTENDED_HERTZ);
   models.addTangentialModel(kTangentialCundallStrackName, TDEM_CUNDALL_STRACK);
+  models.addTangentialModel(kTangentialHaffWernerName, TDEM_HAFF_WERNER);
+  models.addTangentialModel(kTangentialLinearSpringName, TDEM_LINEAR_SPRING);
+  models.addTangentialModel(kTangentialWaltonBraunName, TDEM_WALTON_BRAUN_T);
+  models.addTangentialModel(kTangentialMindlinDeresiewiczName, TDEM_MINDLIN_DERESIEWICZ);
+  models.addTangentialModel(kTangentialMindlinNoSlipName, TDEM_MINDLIN_NO_SLIP);
+  models.addTangentialModel(kTangentialDiRenzoName, TDEM_DI_RENZO);
   detail::register_lsd_a();
   detail::register_lsd_b();
   detail::register_stock_hooke();
@@ -207,6 +220,12 @@ void register_styles() {
   detail::register_power_law();
   detail::register_extended_linear();
   detail::register_extended_hertz();
+  detail::register_tangential_haff_werner();
+  detail::register_tangential_linear_spring();
+  detail::register_tangential_walton_braun();
+  detail::register_tangential_mindlin_deresiewicz();
+  detail::register_tangential_mindlin_no_slip();
+  detail::register_tangential_di_renzo();
 }
 
 void attach(LAMMPS_NS::LAMMPS* lmp) {

@@ -20,6 +20,13 @@ static const int TDEM_CONTINUOUS_POTENTIAL = 44;  // model tdem/continuous_poten
 static const int TDEM_POWER_LAW = 45;             // model tdem/power_law
 static const int TDEM_EXTENDED_LINEAR = 46;       // model tdem/extended_linear
 static const int TDEM_EXTENDED_HERTZ = 47;        // model tdem/extended_hertz
+// tangential laws of issue 4 (tangential ids 41 upwards, after tdem/cundall_strack = 40)
+static const int TDEM_HAFF_WERNER = 41;           // tangential tdem/haff_werner
+static const int TDEM_LINEAR_SPRING = 42;         // tangential tdem/linear_spring
+static const int TDEM_WALTON_BRAUN_T = 43;        // tangential tdem/walton_braun
+static const int TDEM_MINDLIN_DERESIEWICZ = 44;   // tangential tdem/mindlin_deresiewicz
+static const int TDEM_MINDLIN_NO_SLIP = 45;       // tangential tdem/mindlin_no_slip
+static const int TDEM_DI_RENZO = 46;              // tangential tdem/di_renzo
 
 }  // namespace ContactModels
 }  // namespace LIGGGHTS
@@ -35,5 +42,11 @@ inline constexpr const char* kNormalContinuousPotentialName = "tdem/continuous_p
 inline constexpr const char* kNormalPowerLawName = "tdem/power_law";
 inline constexpr const char* kNormalExtendedLinearName = "tdem/extended_linear";
 inline constexpr const char* kNormalExtendedHertzName = "tdem/extended_hertz";
+inline constexpr const char* kTangentialHaffWernerName = "tdem/haff_werner";
+inline constexpr const char* kTangentialLinearSpringName = "tdem/linear_spring";
+inline constexpr const char* kTangentialWaltonBraunName = "tdem/walton_braun";
+inline constexpr const char* kTangentialMindlinDeresiewiczName = "tdem/mindlin_deresiewicz";
+inline constexpr const char* kTangentialMindlinNoSlipName = "tdem/mindlin_no_slip";
+inline constexpr const char* kTangentialDiRenzoName = "tdem/di_renzo";
 }  // namespace liggghts
 }  // namespace tdem

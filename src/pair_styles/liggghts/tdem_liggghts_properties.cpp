@@ -140,6 +140,9 @@ MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* c
   return create_checked(registry, "tangentialStiffnessRatio", caller, Range::non_negative);
 }
 
+MatrixProperty* create_tangential_damping_ratio(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "tangentialDampingRatio", caller, Range::non_negative);
+}
 MatrixProperty* create_damping_coefficient(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked(registry, "dampingCoefficient", caller, Range::non_negative);
 }

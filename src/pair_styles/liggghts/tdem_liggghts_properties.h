@@ -17,6 +17,7 @@ namespace liggghts {
 inline constexpr const char* kPropRestitution = "tdem_coefficientRestitution";  // (0, 1]
 inline constexpr const char* kPropContactTime = "tdem_contactTime";             // > 0
 inline constexpr const char* kPropStiffnessRatio = "tdem_tangentialStiffnessRatio";  // >= 0
+inline constexpr const char* kPropTangentialDampingRatio = "tdem_tangentialDampingRatio";  // >= 0
 inline constexpr const char* kPropDampingCoefficient = "tdem_dampingCoefficient";  // >= 0
 inline constexpr const char* kPropDampingExponent = "tdem_dampingExponent";        // >= 0
 inline constexpr const char* kPropLoadingStiffness = "tdem_loadingStiffness";      // > 0
@@ -40,6 +41,7 @@ inline constexpr const char* kPropImpactVelocityMax = "tdem_impactVelocityMax"; 
 MatrixProperty* create_restitution(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_contact_time(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_tangential_damping_ratio(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_damping_coefficient(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_damping_exponent(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_loading_stiffness(PropertyRegistry& registry, const char* caller, bool);

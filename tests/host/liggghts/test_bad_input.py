@@ -298,6 +298,43 @@ CASES += [
      [r"model tdem/extended_hertz", r"tangentialStiffnessRatio", r"-1", r">= 0"]),
 ]
 
+# ---------------------------------------------------------------- issue-4 tangential laws
+GOOD_T = dict(GOOD_REST)
+GOOD_T.update({"tangentialDampingRatio": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+               "youngsModulus": "peratomtype 5e6 5e6", "poissonsRatio": "peratomtype 0.3 0.3"})
+LS = "model tdem/lsd tangential tdem/linear_spring parameters restitution"
+MD = "model tdem/lsd tangential tdem/mindlin_deresiewicz parameters restitution"
+CASES += [
+    ("tangential tdem/linear_spring frictionLimit value", LS + " frictionLimit positive", props(GOOD_T), None,
+     [r"tangential tdem/linear_spring", r"keyword 'frictionLimit'", r"'positive'",
+      r"allowed values: absolute \| positive_normal"]),
+    ("tangential tdem/mindlin_no_slip slipReset value",
+     "model tdem/hertz tangential tdem/mindlin_no_slip slipReset dashpot", props(GOOD_T), None,
+     [r"tangential tdem/mindlin_no_slip", r"keyword 'slipReset'", r"'dashpot'",
+      r"allowed values: spring_only \| spring_and_dashpot"]),
+    ("tangential tdem/walton_braun has no slipReset", "model tdem/lsd tangential tdem/walton_braun "
+     "parameters restitution slipReset spring_only", props(GOOD_T), None, [r"slipReset"]),
+    ("tangential tdem/haff_werner negative tangentialDampingRatio",
+     "model tdem/lsd tangential tdem/haff_werner parameters restitution",
+     props(GOOD_T, tangentialDampingRatio="peratomtypepair 2 0.5 -0.5 -0.5 0.5"), None,
+     [r"tangential tdem/haff_werner", r"tangentialDampingRatio", r"-0\.5", r"types 1 2", r">= 0"]),
+    ("tangential tdem/linear_spring missing tangentialDampingRatio", LS,
+     props(GOOD_T, tangentialDampingRatio=None), None, [r"tangentialDampingRatio"]),
+    ("tangential tdem/di_renzo negative friction via wall", "model tdem/hertz tangential tdem/di_renzo",
+     props(GOOD_T, coefficientFriction="peratomtypepair 2 -0.5 0.5 0.5 0.5"),
+     "model tdem/hertz tangential tdem/di_renzo primitive type 1 zplane 0.0",
+     [r"tangential tdem/di_renzo", r"coefficientFriction", r"-0\.5", r"types 1 1", r">= 0"]),
+    ("tangential tdem/mindlin_deresiewicz missing youngsModulus", MD, props(GOOD_T, youngsModulus=None), None,
+     [r"youngsModulus"]),
+    ("tangential tdem/mindlin_deresiewicz poissonsRatio out of range", MD,
+     props(GOOD_T, poissonsRatio="peratomtype 0.3 0.7"), None, [r"poissonsRatio|Poisson"]),
+    ("tangential tdem/mindlin_no_slip not compiled with tdem/walton_braun",
+     "model tdem/walton_braun tangential tdem/mindlin_no_slip", props(GOOD_T), None,
+     [r"'model tdem/walton_braun tangential tdem/mindlin_no_slip", r"not compiled", r"compiled tdem combinations"]),
+    ("unknown tangential model lists the new laws", "model tdem/lsd tangential tdem/mindlin", props(GOOD_T), None,
+     [r"keyword 'tangential'", r"'tdem/mindlin'", r"allowed: .*tdem/haff_werner.*tdem/mindlin_deresiewicz.*tdem/di_renzo"]),
+]
+
 
 def main():
     args = T.parse_args(lambda p: p.add_argument("--only", default=None, help="run the cases whose name contains this"))

@@ -105,7 +105,7 @@ def main():
         checks.check(rs.returncode == 0 and rt.returncode == 0, name + ": stock and tdem-liggghts both finish")
         checks.check(len(ts) > 1 and ts == tt, name + ": identical thermo output (%d lines)" % len(ts))
     # the tdem example of this repository (input_scripts/liggghts), shortened
-    for example in ("in.tdem_lsd_box", "in.tdem_nonlinear_box"):
+    for example in ("in.tdem_lsd_box", "in.tdem_nonlinear_box", "in.tdem_tangential_box"):
         if args.only and "input_scripts" not in args.only:
             break
         ex = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "input_scripts",

@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tangential tdem/linear_spring with the normal models tdem/lsd, tdem/hertz, stock hertz and stock hooke.
+#include "register_combo.h"
+namespace tdem::liggghts::detail {
+using namespace LIGGGHTS::ContactModels;
+void register_tangential_linear_spring() {
+  register_combo<TDEM_LSD, TDEM_LINEAR_SPRING>();
+  register_combo<TDEM_HERTZ, TDEM_LINEAR_SPRING>();
+  register_combo<HERTZ, TDEM_LINEAR_SPRING>();
+  register_combo<HOOKE, TDEM_LINEAR_SPRING>();
+}
+}  // namespace tdem::liggghts::detail

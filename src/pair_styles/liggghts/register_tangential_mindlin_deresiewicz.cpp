@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tangential tdem/mindlin_deresiewicz with the normal models tdem/lsd, tdem/hertz, stock hertz and stock hooke.
+#include "register_combo.h"
+namespace tdem::liggghts::detail {
+using namespace LIGGGHTS::ContactModels;
+void register_tangential_mindlin_deresiewicz() {
+  register_combo<TDEM_LSD, TDEM_MINDLIN_DERESIEWICZ>();
+  register_combo<TDEM_HERTZ, TDEM_MINDLIN_DERESIEWICZ>();
+  register_combo<HERTZ, TDEM_MINDLIN_DERESIEWICZ>();
+  register_combo<HOOKE, TDEM_MINDLIN_DERESIEWICZ>();
+}
+}  // namespace tdem::liggghts::detail

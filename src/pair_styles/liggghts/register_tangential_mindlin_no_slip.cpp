@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tangential tdem/mindlin_no_slip with the normal models tdem/lsd, tdem/hertz, stock hertz and stock hooke.
+#include "register_combo.h"
+namespace tdem::liggghts::detail {
+using namespace LIGGGHTS::ContactModels;
+void register_tangential_mindlin_no_slip() {
+  register_combo<TDEM_LSD, TDEM_MINDLIN_NO_SLIP>();
+  register_combo<TDEM_HERTZ, TDEM_MINDLIN_NO_SLIP>();
+  register_combo<HERTZ, TDEM_MINDLIN_NO_SLIP>();
+  register_combo<HOOKE, TDEM_MINDLIN_NO_SLIP>();
+}
+}  // namespace tdem::liggghts::detail
