@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tangential tdem/walton_braun with the normal models tdem/lsd, tdem/hertz, stock hertz and stock hooke.
+// tangential tdem/walton_braun with the normal models tdem/lsd, tdem/hertz, tdem/walton_braun, tdem/thornton, tdem/power_law,
+// tdem/extended_linear, tdem/extended_hertz, stock hertz and stock hooke.
 #include "register_combo.h"
 namespace tdem::liggghts::detail {
 using namespace LIGGGHTS::ContactModels;
@@ -8,5 +9,10 @@ void register_tangential_walton_braun() {
   register_combo<TDEM_HERTZ, TDEM_WALTON_BRAUN_T>();
   register_combo<HERTZ, TDEM_WALTON_BRAUN_T>();
   register_combo<HOOKE, TDEM_WALTON_BRAUN_T>();
+  register_combo<TDEM_WALTON_BRAUN, TDEM_WALTON_BRAUN_T>();
+  register_combo<TDEM_THORNTON, TDEM_WALTON_BRAUN_T>();
+  register_combo<TDEM_POWER_LAW, TDEM_WALTON_BRAUN_T>();
+  register_combo<TDEM_EXTENDED_LINEAR, TDEM_WALTON_BRAUN_T>();
+  register_combo<TDEM_EXTENDED_HERTZ, TDEM_WALTON_BRAUN_T>();
 }
 }  // namespace tdem::liggghts::detail

@@ -328,9 +328,9 @@ CASES += [
      [r"youngsModulus"]),
     ("tangential tdem/mindlin_deresiewicz poissonsRatio out of range", MD,
      props(GOOD_T, poissonsRatio="peratomtype 0.3 0.7"), None, [r"poissonsRatio|Poisson"]),
-    ("tangential tdem/mindlin_no_slip not compiled with tdem/walton_braun",
-     "model tdem/walton_braun tangential tdem/mindlin_no_slip", props(GOOD_T), None,
-     [r"'model tdem/walton_braun tangential tdem/mindlin_no_slip", r"not compiled", r"compiled tdem combinations"]),
+    ("tangential tdem/mindlin_no_slip not compiled with tdem/continuous_potential",
+     "model tdem/continuous_potential tangential tdem/mindlin_no_slip", props(GOOD_T), None,
+     [r"'model tdem/continuous_potential tangential tdem/mindlin_no_slip", r"not compiled", r"compiled tdem combinations"]),
     ("unknown tangential model lists the new laws", "model tdem/lsd tangential tdem/mindlin", props(GOOD_T), None,
      [r"keyword 'tangential'", r"'tdem/mindlin'", r"allowed: .*tdem/haff_werner.*tdem/mindlin_deresiewicz.*tdem/di_renzo"]),
 ]
