@@ -8,6 +8,9 @@
 //  * varying N (Thornton & Yin): the written-out rule for one step, full slip following mu N,
 //    and |F| <= mu N along random paths;
 //  * Tsuji and Di Renzo-Di Maio: no-slip stiffness 8 G* a, ratio 2/3, Tsuji damping;
+//  * issue 4 (ratcheting): nested decaying loops beyond the 4 stored reversals, no creep of a mass
+//    under a constant load with an undamped tangential oscillation, and Walton-Braun's load decay
+//    under closed displacement cycles (the law itself);
 //  * bad input.
 //
 // Closed forms (constant N, L = mu N, K0 = 8 G* a, a = sqrt(R* xi)). The virgin curve solves
@@ -32,6 +35,7 @@
 //   W = 2 T1 g(2 T1) - 2 int_0^{2 T1} g,  int_0^Y g = (3D/(2k0)) [Y - (3D/5)(1 - (1 - Y/D)^(5/3))].
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -392,4 +396,103 @@ TEST(MindlinNoSlip, BadInput) {
   expect_msg([] { drm::validate({0.0, 0.3, FL::absolute}); }, "effective shear modulus G*", "0");
   expect_msg([] { wbt::validate({-1.0, 0.0, 0.3, FL::absolute}); }, "initial tangential stiffness k_t0", "-1");
   expect_msg([] { tg::effective_shear_modulus(1e9, 0.3, -2e9, 0.3); }, "shear modulus G2", "-2e+09");
+}
+
+// Issue 4 (ratcheting). A decaying oscillation at constant N: every reversal lies inside the
+// previous loop, so no loop ever closes and the memory holds one more reversal point per half
+// cycle. By Masing's rules each branch is the virgin curve scaled by 2 about its own reversal
+// point (d_k, T_k) and only depends on it: the chain of closed forms below (T_k from the branch
+// before) must hold for all 14 reversals, far beyond the 4 stored points. (Until issue 4 a full
+// memory dropped the newest point and ran the branch on from r_3: wrong from the 5th reversal on.)
+TEST(MindlinDeresiewicz, DecayingOscillationFollowsNestedMasingLoops) {
+  for (int n : {200, 7}) {
+    const auto f = md_law();
+    double h[md::history_size] = {0}, delta = 0.0;
+    double dk = 0.8 * kDc;
+    drive(f, h, delta, dk, n, [&](double d, double t, bool) { EXPECT_NEAR(t, md_virgin(d), 1e-10 * kL) << d; });
+    double tk = md_virgin(dk);
+    for (int k = 1; k <= 14; ++k) {
+      const double dn = -0.85 * dk, d0 = dk, t0 = tk;  // next reversal, inside the previous loop
+      const bool down = dn < d0;
+      const auto branch = [&](double d) { return down ? md_unload(d0, t0, d) : md_reload(d0, t0, d); };
+      drive(f, h, delta, dn, n, [&](double d, double t, bool sl) {
+        EXPECT_NEAR(t, branch(d), 1e-10 * kL) << "branch " << k << " (n = " << n << ") at d/d_c = " << d / kDc;
+        EXPECT_FALSE(sl);
+      });
+      dk = dn, tk = branch(dn);
+    }
+    // ... and a large excursion afterwards still ends on the virgin curve and the limit.
+    drive(f, h, delta, 1.2 * kDc, n, [](double, double, bool) {});
+    V3 F{};
+    EXPECT_TRUE(f(kin({1e-3 * kDc, 0, 0}, 1.0, kN), h, true, F.data()));
+    EXPECT_NEAR(-F[0], kL, 1e-12 * kL);
+  }
+}
+
+// Issue 4: a mass on the contact under a constant tangential load P = L/2 applied at once (a
+// sphere that cannot roll on a slope with tan(theta) = mu/2, no damping): the tangential
+// oscillation decays through the hysteresis loops, which are nested - so the mass must stay
+// inside the range of the first loop and its mean position must settle, not creep. (Before the
+// fix of the full memory the mean crept against the load by about the amplitude every few
+// hundred cycles.)
+TEST(MindlinDeresiewicz, NoRatchetingUnderAnUndampedForceControlledOscillation) {
+  const auto f = md_law();
+  const double m = 1e-3, P = 0.5 * kL, w = std::sqrt(kK0 / m), dt = 2.0 * M_PI / w / 100.0;
+  double h[md::history_size] = {0}, x = 0.0, v = 0.0;
+  V3 F{};
+  const auto force = [&]() {
+    f(kin({v, 0, 0}, dt, kN), h, true, F.data());
+    return P + F[0];
+  };
+  double a = force() / m, xmin = 0.0, xmax = 0.0;
+  const int per = 100, cycles = 600;
+  std::vector<double> mean(cycles, 0.0);
+  for (int c = 0; c < cycles; ++c) {
+    for (int i = 0; i < per; ++i) {
+      v += 0.5 * dt * a;
+      x += dt * v;
+      a = force() / m;
+      v += 0.5 * dt * a;
+      mean[c] += x / per;
+      if (c < 2) xmin = std::min(xmin, x), xmax = std::max(xmax, x);
+      if (c >= 2) {
+        ASSERT_GE(x, xmin - 1e-9 * (xmax - xmin)) << "cycle " << c;
+        ASSERT_LE(x, xmax + 1e-9 * (xmax - xmin)) << "cycle " << c;
+      }
+    }
+  }
+  // the first loading overshoots: the first loop spans more than the static displacement
+  EXPECT_GT(xmax, 1.2 * kDc * (1.0 - std::pow(0.5, 2.0 / 3.0)));
+  double m1 = 0.0, m2 = 0.0;
+  for (int c = 200; c < 400; ++c) m1 += mean[c] / 200.0;
+  for (int c = 400; c < 600; ++c) m2 += mean[c] / 200.0;
+  EXPECT_LT(std::fabs(m2 - m1), 1e-3 * (xmax - xmin)) << "mean " << m1 << " -> " << m2;
+}
+
+// Walton-Braun has no memory of reversal points, so a closed displacement cycle about a loaded
+// mean does not close the force loop: the unloading branch (D = L + T*) is stiffer than the
+// loading branch (D = L - T*) and the load falls cycle after cycle (under a constant load: the
+// contact creeps along the load, e.g. down a slope). This is the law, not a discretisation
+// error: the kernel follows the chain of closed-form branches for any step.
+TEST(MindlinWaltonBraunTangential, ClosedDisplacementCyclesLetTheLoadDecayAsTheBranchesPredict) {
+  const double k0 = 2e7, dcw = 1.5 * kL / k0;
+  for (int n : {100, 5}) {
+    const auto f = wb_law(k0);
+    double h[wbt::history_size] = {0}, delta = 0.0;
+    const double dm = 0.3 * dcw, amp = 0.05 * dcw;
+    drive(f, h, delta, dm, n, [](double, double, bool) {});
+    const double t_start = wb_branch(k0, 0, 0, 1, dm);
+    double dr = 0.0, tr = 0.0, s = 1.0, ts = t_start;  // the current branch: reversal point, direction
+    for (int c = 0; c < 40; ++c) {
+      for (double target : {dm + amp, dm - amp, dm}) {
+        const double dir = target > delta ? 1.0 : -1.0;
+        if (dir != s) dr = delta, tr = ts, s = dir;  // reversal: a new branch from the current load
+        drive(f, h, delta, target, n, [&](double d, double t, bool) {
+          EXPECT_NEAR(t, wb_branch(k0, dr, tr, s, d), 1e-9 * kL) << "cycle " << c << " d/d_c " << d / dcw;
+        });
+        ts = wb_branch(k0, dr, tr, s, target);
+      }
+    }
+    EXPECT_LT(ts, 0.9 * t_start);  // the load at d = dm has decayed
+  }
 }

@@ -15,7 +15,11 @@
 // integration of each step):
 //   T(d) = T* + s (F_lim - s T*) [1 - (1 - 2 k_t0 s (d - d*) / (3 (F_lim - s T*)))^(3/2)].
 // Unlike Mindlin-Deresiewicz there is no memory of earlier reversal points: a reversal always
-// starts a new branch towards the opposite limit.
+// starts a new branch towards the opposite limit. Hence closed displacement cycles about a loaded
+// mean do not close the force loop: the unloading branch (D = F_lim + T*) is stiffer than the
+// loading one (D = F_lim - T*), the load decays cycle by cycle, and under a constant load an
+// undamped tangential oscillation creeps along the load (e.g. down a slope). That is the law
+// itself (issue 4), not a discretisation error.
 // Varying N (Walton & Braun's rule as we read it): the current F_lim enters the stiffness; T and
 // T* are not rescaled, T* is clamped to [-F_lim, F_lim], a load beyond the limit is capped
 // (gross sliding) and a load behind T* (possible after F_lim has dropped) re-anchors T* = T.
