@@ -311,6 +311,63 @@ for cmdline, option in bad:
     else:
         print(f"ok   exit 2: {p.stderr.strip()}")
 
+# ---- --analytic: the closed form of collision/analytic.h against the integrator (default steps), the
+# physics_reference 8.5 set-up (lsd --e 0.98 --tc 1e-5 zero_force, kappa 2/7 or the same k_t, mu 0.092).
+R85, V85 = 2.5e-3, 3.9
+BASE85 = f"--law lsd --e 0.98 --tc 1e-5 --end zero_force --R1 {R85} --rho 4000 --wall --v0 {V85}"
+for theta, tang in ((10, "--tangential cundall_strack --mu 0.092 --kappa 0.2857142857142857"),
+                    (20, "--tangential cundall_strack --mu 0.092 --kappa 0.2857142857142857"),
+                    (40, "--tangential cundall_strack --mu 0.092 --kt 1.0e6"),
+                    (30, "--tangential cundall_strack --mu 0.092 --kappa 0.2857142857142857 --spin -300 "
+                         "--friction-limit positive_normal")):
+    ji = collide(f"{BASE85} --angle {theta} {tang}")
+    ja = collide(f"{BASE85} --angle {theta} {tang} --analytic")
+    if not ji or not ja:
+        continue
+    if ja.get("method") != "analytic" or ji.get("method") != "integrated":
+        failures.append(f"analytic {theta}: method {ja.get('method')} / {ji.get('method')}")
+    missing = [k for k in ji if k not in ja]
+    if missing:
+        failures.append(f"analytic {theta}: keys missing from the --analytic output: {missing}")
+    check_abs(f"analytic {theta} deg beta", ja["beta"], ji["beta"], 1e-5)
+    check_abs(f"analytic {theta} deg e_t", ja["e_t"], ji["e_t"], 1e-5)
+    check_abs(f"analytic {theta} deg spin R/v", ja["spin_after"] * R85 / V85, ji["spin_after"] * R85 / V85, 1e-5)
+    check_abs(f"analytic {theta} deg e", ja["e"], 0.98, 1e-12)  # the fit, closed form
+    check(f"analytic {theta} deg contact time", ja["contact_time"], 1e-5, 1e-12)
+    check(f"analytic {theta} deg rebound angle", ja["rebound_angle_contact"], ji["rebound_angle_contact"], 1e-4)
+    if ja["n_switches"] != ji["n_switches"]:
+        failures.append(f"analytic {theta}: {ja['n_switches']} switches, integrated {ji['n_switches']}")
+# frictionless, oblique and head-on, zero_overlap end: e = exp(-pi delta/w), e_t = 1, no spin
+ja = collide("--law lsd --k 1e5 --gamma 4.48097 --m1 0.01 --R1 0.01 --wall --v0 1 --angle 30 --analytic")
+if ja:
+    d0 = 4.48097 / 0.02
+    check("analytic frictionless e", ja["e"], math.exp(-d0 * math.pi / math.sqrt(1e7 - d0 * d0)), 1e-12)
+    check_abs("analytic frictionless e_t", ja["e_t"], 1.0, 1e-12)
+    check_abs("analytic frictionless spin", ja["spin_after"], 0.0, 1e-12)
+ja = collide("--law lsd --k 1e5 --gamma 4.48097 --m1 0.01 --wall --v0 1 --analytic")
+if ja:
+    check("analytic head-on max_overlap", ja["max_overlap"], ja["closed_form"]["max_overlap"], 1e-12)
+    check("analytic head-on t_c (table 8.1)", ja["contact_time"], 9.95962e-4, 1e-6)
+    if "beta" in ja or ja["method"] != "analytic":
+        failures.append("analytic head-on: oblique keys printed or method wrong")
+W85 = "--R1 0.01 --rho 4000 --v0 1"
+for cmdline, option in (
+        (f"--law hertz --k 1e9 --wall {W85} --analytic", "--law hertz"),
+        (f"--law lsd --k 1e5 {W85} --R2 0.01 --analytic", "--wall"),
+        (f"--law lsd --k 1e5 --wall {W85} --angle 20 --tangential linear_spring --mu 0.1 --kt 1e4 --analytic",
+         "--tangential linear_spring"),
+        (f"--law lsd --k 1e5 --wall {W85} --angle 20 --tangential cundall_strack --mu 0.1 --kt 1e4 --gammat 0.1 "
+         "--analytic", "--gammat"),
+        (f"--law lsd --k 1e5 --wall {W85} --angle 20 --tangential cundall_strack --mu 0.1 --kt 1e4 "
+         "--lever-arm contact_point --analytic", "--lever-arm"),
+        (f"--law lsd --k 1e5 --wall {W85} --steps 100 --analytic", "--steps"),
+        (f"--law lsd --k 1e5 --wall {W85} --analytic --curve x.csv", "--curve")):
+    p = run(cmdline, expect=2)
+    if option not in p.stderr or "--analytic supports" not in p.stderr or p.stdout:
+        failures.append(f"'{cmdline}': message does not name {option} and what --analytic supports: {p.stderr.strip()}")
+    else:
+        print(f"ok   exit 2: {p.stderr.strip()[:110]}...")
+
 if failures:
     print("\nFAILURES:\n  " + "\n  ".join(failures))
     sys.exit(1)

@@ -20,6 +20,7 @@
 
 #include "collision/conversions.h"
 #include "collision/head_on.h"
+#include "collision/analytic.h"
 #include "collision/oblique.h"
 #include "collision/rigid_body.h"
 #include "contact/tangential/di_renzo.h"
@@ -128,9 +129,14 @@ Integration and output:
   --dt DT                 fixed time step [s] (overrides --steps)
   --curve FILE            write the samples t,xi,xi_dot,F (CSV, one per step) to FILE
                           (oblique: t,xi,xi_dot,F,Ft,vs,sliding)
+  --analytic              closed-form solution instead of the integrator (collision/analytic.h):
+                          only a sphere-wall impact (--wall), --law lsd (any parameter form, either
+                          --end) and --tangential none or cundall_strack without --gammat, lever arm
+                          radius; not with --curve, --steps or --dt. "method": "analytic"; steps = 0,
+                          dt and max_tangential_force null
   --help                  this text
 
-Output: JSON on stdout with law, end, parameters, m_eff, r_eff, v0, e, contact_time,
+Output: JSON on stdout with law, method (integrated|analytic), end, parameters, m_eff, r_eff, v0, e, contact_time,
 max_overlap, max_force, residual_overlap, rebound_velocity, dissipated_energy, steps, dt,
 contact_time_estimate, ended, curve; oblique impacts add speed, angle, vn0, vt0, vs0, spin, beta,
 e_t, spin_after, rebound angles, psi1, psi2, stick/slip switches and rigid_body (docs/collide.md).
@@ -150,7 +156,7 @@ std::string num_str(double v) {
 class Args {
  public:
   Args(int argc, char** argv) {
-    static const std::set<std::string> flags = {"--wall", "--help"};
+    static const std::set<std::string> flags = {"--wall", "--help", "--analytic"};
     static const std::set<std::string> known = {
         "--law", "--m1", "--m2", "--R1", "--R2", "--rho", "--rho2", "--wall", "--v0", "--k",
         "--gamma", "--e", "--tc", "--end", "--Estar", "--E", "--nu", "--E2", "--nu2",
@@ -158,7 +164,8 @@ class Args {
         "--eps", "--x-min", "--n", "--d", "--x-cut", "--steps", "--dt", "--curve", "--help",
         "--e-fit", "--e-coef", "--tc-fit", "--tc-coef", "--v-min", "--v-max", "--e-min", "--al", "--p",
         "--aul", "--q", "--angle", "--spin", "--spin2", "--tangential", "--mu", "--kt", "--kappa", "--gammat",
-        "--friction-limit", "--slip-reset", "--gstar", "--eta-ratio", "--beta0", "--psi-kappa", "--lever-arm"};
+        "--friction-limit", "--slip-reset", "--gstar", "--eta-ratio", "--beta0", "--psi-kappa", "--lever-arm",
+        "--analytic"};
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
       if (a == "-h") a = "--help";
@@ -397,6 +404,7 @@ struct Run {
   std::vector<std::pair<std::string, double>> closed;  // closed-form predictions, where known
   collision::Result result;
   Oblique obl;
+  bool analytic = false;  // --analytic: closed form (collision/analytic.h) instead of the integrator
 };
 
 // Adds a closed-form prediction; skipped where the closed form does not apply (it throws).
@@ -641,6 +649,138 @@ void run_oblique(Run& run, Law& law, const collision::Options& ho) {
   }
 }
 
+// ------------------------------------------------ --analytic
+constexpr const char* kAnalyticSupports =
+    "--analytic supports a sphere-wall impact (--wall) with --law lsd (--k/--gamma, --e with --k or --tc, "
+    "either --end) and --tangential none or cundall_strack (--mu, --kt or --kappa, --friction-limit, "
+    "no --gammat), lever arm radius, no --curve/--steps/--dt";
+
+// Refuses what the closed form cannot do (before the laws read their options).
+void analytic_check_start(Args& a, const std::string& law) {
+  if (law != "lsd")
+    throw BadInput("option --analytic does not support --law " + law + " (" + kAnalyticSupports + ")");
+  for (const char* opt : {"--curve", "--steps", "--dt"})
+    if (a.has(opt))
+      throw BadInput(std::string("option ") + opt + " cannot be used with --analytic (no time stepping; " +
+                     kAnalyticSupports + ")");
+  if (!a.has("--wall"))
+    throw BadInput(std::string("option --analytic needs --wall: two spheres are not supported (") +
+                   kAnalyticSupports + ")");
+}
+
+void analytic_check_oblique(Args& a, const Oblique& o) {
+  if (o.tangential != "none" && o.tangential != "cundall_strack")
+    throw BadInput("option --analytic does not support --tangential " + o.tangential + " (" + kAnalyticSupports +
+                   ")");
+  if (o.gammat != 0.0)
+    throw BadInput("option --gammat = " + a.str("--gammat") +
+                   " cannot be used with --analytic (tangential damping: the closed form needs --gammat 0; " +
+                   kAnalyticSupports + ")");
+  if (o.opt.lever != collision::LeverArm::radius)
+    throw BadInput(std::string("option --lever-arm contact_point cannot be used with --analytic (") +
+                   kAnalyticSupports + ")");
+}
+
+// The closed-form sphere-wall impact (lsd normal law, Cundall-Strack spring or frictionless).
+void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, double v0) {
+  Oblique& o = run.obl;
+  namespace an = collision::analytic;
+  an::Input in;
+  in.m = b.m1;
+  in.R = b.R1 > 0.0 ? b.R1 : 1.0;  // head-on without a radius: the lever arm plays no role
+  in.I = 0.0;                      // solid sphere, as the integrator
+  in.kn = law.c.k;
+  in.gn = law.c.gamma;
+  in.end = law.end_mode;
+  const bool friction = o.tangential == "cundall_strack";
+  double kt = NAN;
+  double kappa = o.psi_kappa;
+  if (friction) {
+    kt = std::isnan(o.kt) ? o.kappa * law.c.k : o.kt;
+    in.kt = kt;
+    in.mu = o.mu;
+    in.limit = o.limit;
+    o.tparams = {{"kt", kt}, {"gammat", 0.0}, {"mu", o.mu}};
+    o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}, {"slip_rule", "spring"}};
+    if (std::isnan(kappa)) kappa = std::isnan(o.kappa) ? kt / law.c.k : o.kappa;
+  } else {
+    in.kt = law.c.k;  // unused without friction (mu = 0)
+    in.mu = 0.0;
+  }
+  in.vn0 = v0;
+  in.vt0 = o.active ? o.impact.speed * std::sin(o.impact.angle) : 0.0;
+  in.omega0 = o.active ? o.impact.omega1 : 0.0;
+  const an::Output x = an::impact(in);
+  const an::Normal nrm = an::make_normal(in);
+  const double I = 0.4 * in.m * in.R * in.R;
+
+  // normal closed forms: largest overlap (xi' = 0) and force (F' = 0, or F(0) = gamma v0)
+  const double t_xmax = std::atan2(nrm.w, nrm.delta) / nrm.w;
+  const double A = (nrm.k - nrm.g * nrm.delta) / nrm.w;
+  double t_fmax = std::atan2(nrm.w * A - nrm.delta * nrm.g, nrm.delta * A + nrm.w * nrm.g) / nrm.w;
+  t_fmax = std::min(std::max(t_fmax, 0.0), nrm.t_end);
+  const double ke0 = 0.5 * in.m * (in.vn0 * in.vn0 + in.vt0 * in.vt0) + 0.5 * I * in.omega0 * in.omega0;
+  const double ke1 = 0.5 * in.m * (x.vn * x.vn + x.vt * x.vt) + 0.5 * I * x.omega * x.omega;
+
+  auto& res = run.result;
+  res.ended = true;
+  res.v0 = v0;
+  res.restitution = x.e;
+  res.rebound_velocity = x.vn;
+  res.contact_time = x.contact_time;
+  res.residual_overlap = in.end == ContactEnd::zero_overlap ? 0.0 : nrm.xi(nrm.t_end);
+  res.dissipated_energy = ke0 - ke1;
+  res.max_overlap = nrm.xi(t_xmax);
+  res.max_force = std::max(nrm.fn(0.0), nrm.fn(t_fmax));
+  res.steps = 0;
+  res.dt = NAN;
+  res.contact_time_estimate = x.contact_time;
+  if (!o.active) return;
+
+  collision::ObliqueResult& r = o.r;
+  r.ended = true;
+  r.vn0 = in.vn0;
+  r.vt0 = in.vt0;
+  r.vs0 = x.vs0;
+  r.omega1_0 = in.omega0;
+  r.impact_angle = std::atan2(r.vt0, r.vn0);
+  r.impact_angle_contact = std::atan2(r.vs0, r.vn0);
+  r.e = x.e;
+  r.vn = x.vn;
+  r.vt = x.vt;
+  r.vs = x.vs;
+  r.omega1 = x.omega;
+  r.omega2 = 0.0;
+  r.beta = x.beta;
+  r.e_t = x.e_t;
+  r.rebound_angle_com = x.rebound_angle_com;
+  r.rebound_angle_contact = x.rebound_angle_contact;
+  r.mu = in.mu;
+  r.kappa = kappa;
+  if (r.mu > 0.0) {
+    r.slip_ratio_in = x.slip_ratio_in;
+    r.slip_ratio_out = x.slip_ratio_out;
+    r.psi1 = r.kappa * r.slip_ratio_in;
+    r.psi2 = r.kappa * r.slip_ratio_out;
+  }
+  r.contact_time = x.contact_time;
+  r.max_overlap = res.max_overlap;
+  r.max_normal_force = res.max_force;
+  r.max_tangential_force = NAN;  // not evaluated by the closed form
+  r.residual_overlap = res.residual_overlap;
+  r.dissipated_energy = res.dissipated_energy;
+  r.m_n = in.m;
+  r.m_t = x.m_t;
+  r.sliding_at_start = x.sliding_at_start;
+  for (const auto& s : x.switches) r.switches.push_back({s.t, s.sliding});
+  r.n_switches = static_cast<long>(x.switches.size());
+  r.dt = NAN;
+  r.steps = 0;
+  r.contact_time_estimate = x.contact_time;
+  o.rb = collision::rigid_body_prediction(o.bodies, o.impact, std::min(std::max(x.e, 0.0), 1.0), o.mu, o.beta0);
+  o.rb_valid = true;
+}
+
 template <class Law>
 void go(Run& run, Law& law, const Bodies& b, double v0, const collision::Options& o) {
   if (run.obl.active) run_oblique(run, law, o);
@@ -654,6 +794,8 @@ Run run(Args& a) {
                      "extended_hertz)");
   run.law = a.choice("--law", {"lsd", "hertz", "walton_braun", "thornton", "continuous_potential", "power_law",
                                "extended_linear", "extended_hertz"});
+  run.analytic = a.flag("--analytic");
+  if (run.analytic) analytic_check_start(a, run.law);
   a.require("--v0", "(impact velocity)");
   const double speed = a.positive("--v0");
   const double angle_deg = a.has("--angle") ? a.number("--angle", 0.0, 90.0, false, true, "[0, 90) degrees") : 0.0;
@@ -705,6 +847,7 @@ Run run(Args& a) {
   opt.record = a.has("--curve");
   if (opt.record) a.str("--curve");
   run.obl = read_oblique(a, b, speed, angle_deg);
+  if (run.analytic) analytic_check_oblique(a, run.obl);
   if (run.obl.active && a.has("--steps")) run.obl.opt.steps_per_contact = opt.steps_per_contact;
 
   // ------------------------------------------------ laws
@@ -731,7 +874,8 @@ Run run(Args& a) {
     predict(run, "contact_time", [&] { return lsd::contact_time(law.c, meff, law.end_mode); });
     predict(run, "max_overlap", [&] { return lsd::max_overlap(law.c, meff, v0); });
     a.check_all_used(run.law);
-    go(run, law, b, v0, opt);
+    if (run.analytic) run_analytic(run, law, b, v0);
+    else go(run, law, b, v0, opt);
   } else if (run.law == "hertz") {
     collision::HertzLaw law;
     law.end_mode = read_end(a, ContactEnd::zero_overlap);
@@ -1087,6 +1231,7 @@ int main(int argc, char** argv) {
   }
   Json j;
   j.str("law", r.law);
+  j.str("method", r.analytic ? "analytic" : "integrated");
   j.str("end", r.end);
   if (!r.damping.empty()) j.str("damping", r.damping);
   j.open("parameters");
@@ -1117,7 +1262,7 @@ int main(int argc, char** argv) {
   else j.null("curve");
   if (r.obl.active) write_oblique(j, r.obl);
   std::fputs(j.done().c_str(), stdout);
-  if (res.ended && res.steps < 20)
+  if (res.ended && res.steps < 20 && !r.analytic)
     std::fprintf(stderr, "tdem-collide: warning: only %ld steps in the contact; use a smaller --dt or more --steps\n",
                  res.steps);
   if (!res.ended) {
