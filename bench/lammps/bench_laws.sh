@@ -43,19 +43,9 @@
 #   needs data.chute: from $TDEM_LAMMPS_SOURCE/bench (default: /opt/tdem-deps/lammps-*/bench
 #   or /var/cache/tdem/lammps-*/bench)
 set -eu
-here=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$here/build}" && pwd)
-steps=${2:-1000}
-repeats=${3:-2}
-exe=$build/bin/tdem-lammps
-[ -x "$exe" ] || { echo "no $exe (build first)" >&2; exit 1; }
-src=${TDEM_LAMMPS_SOURCE:-$(ls -d /var/cache/tdem/lammps-* /opt/tdem-deps/lammps-* 2>/dev/null | head -1)}
-data=$src/bench/data.chute
-[ -f "$data" ] || { echo "no data.chute under $src/bench (set TDEM_LAMMPS_SOURCE)" >&2; exit 1; }
-
-work=$(mktemp -d /tmp/tdem_bench_laws.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-cp "$data" "$work/"
+BENCH=bench_laws
+source "$(dirname "$0")/bench_chute.sh"
+chute_setup "$@"
 
 kt=$(awk 'BEGIN { printf "%.17g", 200000.0 * 2.0 / 7.0 }')
 # hertz_kk: G = m* gamma_n sqrt(R*), m* = (pi/6)/2, R* = 1/4
@@ -84,92 +74,8 @@ inter[ext_linear_fit]=$(tdem "normal extended_linear e_fit rational 1 1 0.2 tc_f
 inter[ext_hertz]=$(tdem "normal extended_hertz 3e5 0 e_fit constant 0.7")
 inter[ext_hertz_fit]=$(tdem "normal extended_hertz 3e5 0 e_fit rational 1 1 0.2")
 
-scene() {  # $1 = name
-cat <<EOS
-print           "bench-style $1"
-units           lj
-atom_style      sphere
-boundary        p p fs
-newton          off
-comm_modify     vel yes
-read_data       data.chute
-${inter[$1]}
-neighbor        0.1 bin
-neigh_modify    every 1 delay 0
-timestep        0.0001
-group           bottom type 2
-group           active subtract all bottom
-neigh_modify    exclude group bottom bottom
-fix             1 all gravity 1.0 chute 26.0
-fix             2 bottom freeze
-fix             3 active nve/sphere
-compute         1 all erotate/sphere
-compute         nc all contact/atom
-compute         2 all reduce ave c_nc
-thermo_style    custom step atoms ke c_1 vol c_2
-thermo_modify   norm no format float %.15g
-thermo          $steps
-run             $steps
-clear
-EOS
-}
-
-: > "$work/in.bench"
-for ((i = 0; i < repeats; i++)); do
-  if ((i % 2 == 0)); then order=("${names[@]}"); else
-    order=(); for ((k = ${#names[@]} - 1; k >= 0; k--)); do order+=("${names[k]}"); done; fi
-  for n in "${order[@]}"; do scene "$n" >> "$work/in.bench"; done
-done
-
-echo "bench_laws: ${#names[@]} styles x $repeats rounds x $steps steps, 32000 spheres (in.chute), $(date -u '+%Y-%m-%d %H:%M UTC')"
-(cd "$work" && ${TDEM_BENCH_WRAP:-} "$exe" -in in.bench -log log.bench -echo none > out.bench)
-awk -v order="${names[*]}" '
-  /^bench-style/ { style = $2 }
-  $1 == "Step" { getline; getline; nc[style] = $6 }
-  /^Loop time of/ { n++; t = $4; st = $9; at = $12; k[n] = style; wall[n] = t; ps[n] = at * st }
-  /% CPU use with/ { cpu[n] = t * $1 / 100 }
-  END {
-    for (i = 1; i <= n; i++) {
-      w = ps[i] / wall[i]; c = ps[i] / cpu[i]
-      if (w > bw[k[i]]) bw[k[i]] = w
-      if (c > bc[k[i]]) bc[k[i]] = c
-      runs[k[i]] = runs[k[i]] sprintf("%s%.3g", runs[k[i]] == "" ? "" : ", ", w)
-    }
-    m = split(order, o, " ")
-    print ""
-    print "| style | particle-steps/s (best wall) | per cpu-s (best) | vs stock hooke | vs stock hertz | contacts/particle | runs (wall) |"
-    print "|---|---|---|---|---|---|---|"
-    for (i = 1; i <= m; i++) {
-      s = o[i]
-      printf "| %s | %.4g | %.4g | %.3f | %.3f | %.3g | %s |\n", s, bw[s], bc[s], bw[s] / bw["stock_hooke"], bw[s] / bw["stock_hertz"], nc[s], runs[s]
-    }
-  }' "$work/out.bench"
+chute_run
+chute_table stock_hooke stock_hertz
 # lsd and stock_hooke have identical physics: the thermo line after each of their runs agrees
-awk '/^bench-style/ { style = $2 } $1 == "Step" { getline; getline; line[style, ++c[style]] = $0 }
-     END { same = 1; for (i = 1; i <= c["lsd"]; i++) if (line["lsd", i] != line["stock_hooke", 1]) same = 0;
-           print ""; print (same ? "thermo after the runs: lsd identical to stock_hooke" : "thermo after the runs: lsd DIFFERS from stock_hooke") }' "$work/out.bench"
-
-if [ -n "${CALLGRIND:-}" ]; then
-  timed_steps=$steps
-  steps=${CALLGRIND_STEPS:-50}
-  : > "$work/cg.summary"
-  for n in "${names[@]}"; do
-    scene "$n" > "$work/cg.in.$n"
-    (cd "$work" && valgrind --tool=callgrind --callgrind-out-file="cg.$n" "$exe" -in "cg.in.$n" -log none \
-       -echo none -screen none > "cg.$n.txt" 2>&1)
-    total=$(grep 'Collected' "$work/cg.$n.txt" | awk '{print $4}')
-    pair=$(callgrind_annotate --inclusive=yes "$work/cg.$n" 2>/dev/null |
-           grep -E 'PairGranHookeHistory::compute\(|PairGranHertzHistory::compute\(|PairTDEMGran::compute\(' |
-           head -1 | awk '{gsub(",","",$1); print $1}')
-    echo "$n $total $pair" >> "$work/cg.summary"
-  done
-  steps=$timed_steps
-  awk -v n="${CALLGRIND_STEPS:-50}" '{ s[++m] = $1; t[$1] = $2; p[$1] = $3 } END {
-    print ""
-    printf "callgrind, %d steps each (instructions; not disturbed by other load):\n\n", n
-    print "| style | total | pair compute() | pair vs stock hooke | pair vs stock hertz |"
-    print "|---|---|---|---|---|"
-    for (i = 1; i <= m; i++)
-      printf "| %s | %.4g | %.4g | %.3f | %.3f |\n", s[i], t[s[i]], p[s[i]], p[s[i]] / p["stock_hooke"], p[s[i]] / p["stock_hertz"]
-  }' "$work/cg.summary"
-fi
+chute_identical stock_hooke lsd
+chute_callgrind stock_hooke stock_hertz

@@ -1,4 +1,4 @@
-#!/bin/sh
+#!/bin/bash
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Speed of pair tdem/gran (normal lsd stiffness + tangential cundall_strack) against the stock
 # pair gran/hooke/history with the same physics, in one tdem-lammps run, on the LAMMPS
@@ -17,67 +17,21 @@
 #   needs data.chute: from $TDEM_LAMMPS_SOURCE/bench (default: /opt/tdem-deps/lammps-*/bench
 #   or /var/cache/tdem/lammps-*/bench)
 set -eu
-here=$(cd "$(dirname "$0")/../.." && pwd)
-build=$(cd "${1:-$here/build}" && pwd)
-steps=${2:-1000}
-repeats=${3:-2}
-exe=$build/bin/tdem-lammps
-[ -x "$exe" ] || { echo "no $exe (build first)" >&2; exit 1; }
-src=${TDEM_LAMMPS_SOURCE:-$(ls -d /var/cache/tdem/lammps-* /opt/tdem-deps/lammps-* 2>/dev/null | head -1)}
-data=$src/bench/data.chute
-[ -f "$data" ] || { echo "no data.chute under $src/bench (set TDEM_LAMMPS_SOURCE)" >&2; exit 1; }
-
-work=$(mktemp -d /tmp/tdem_bench_lammps.XXXXXX)
-trap 'rm -rf "$work"' EXIT
-cp "$data" "$work/"
+BENCH=bench_linear
+source "$(dirname "$0")/bench_chute.sh"
+chute_setup "$@"
 kt=$(python3 -c 'print(repr(200000.0*2.0/7.0))')
 
-scene() {  # $1 = name, $2 = interaction lines
-cat <<EOS
-print           "bench-style $1"
-units           lj
-atom_style      sphere
-boundary        p p fs
-newton          off
-comm_modify     vel yes
-read_data       data.chute
-$2
-neighbor        0.1 bin
-neigh_modify    every 1 delay 0
-timestep        0.0001
-group           bottom type 2
-group           active subtract all bottom
-neigh_modify    exclude group bottom bottom
-fix             1 all gravity 1.0 chute 26.0
-fix             2 bottom freeze
-fix             3 active nve/sphere
-compute         1 all erotate/sphere
-thermo_style    custom step atoms ke c_1 vol
-thermo_modify   norm no format float %.15g
-thermo          $steps
-run             $steps
-clear
-EOS
-}
-stock="pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
+names=(stock tdem)
+declare -A inter
+inter[stock]="pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0
 pair_coeff * *"
-tdem="pair_style tdem/gran
+inter[tdem]="pair_style tdem/gran
 pair_coeff * * normal lsd stiffness 200000.0 50.0 tangential cundall_strack $kt 0.0 0.5"
 
-: > "$work/in.bench"
-i=0
 # alternate the order (stock first, then tdem first, ...) so neither style always runs on a
 # freshly started process
-while [ $i -lt "$repeats" ]; do
-  if [ $((i % 2)) -eq 0 ]; then
-    scene stock "$stock" >> "$work/in.bench"; scene tdem "$tdem" >> "$work/in.bench"
-  else
-    scene tdem "$tdem" >> "$work/in.bench"; scene stock "$stock" >> "$work/in.bench"
-  fi
-  i=$((i + 1))
-done
-
-(cd "$work" && ${TDEM_BENCH_WRAP:-} "$exe" -in in.bench -log log.bench -echo none > out.bench)
+chute_run
 awk '
   function median(s,   m, a, i, j, t) {
     m = ns[s]; for (i = 1; i <= m; i++) a[i] = v[s, i]
@@ -104,20 +58,4 @@ awk '$1 == "Step" { getline; getline; line[++n] = $0 }
      END { same = 1; for (i = 2; i <= n; i++) if (line[i] != line[1]) same = 0;
            print (same ? "thermo after every run: identical for stock and tdem" : "thermo after the runs: DIFFERENT") }' "$work/out.bench"
 
-if [ -n "${CALLGRIND:-}" ]; then
-  timed_steps=$steps
-  steps=${CALLGRIND_STEPS:-50}
-  for m in stock tdem; do
-    if [ $m = stock ]; then scene stock "$stock" > "$work/cg.in.$m"; else scene tdem "$tdem" > "$work/cg.in.$m"; fi
-    (cd "$work" && valgrind --tool=callgrind --callgrind-out-file=cg.$m "$exe" -in cg.in.$m -log none \
-       -echo none -screen none > cg.$m.txt 2>&1)
-    total=$(grep 'Collected' "$work/cg.$m.txt" | awk '{print $4}')
-    pair=$(callgrind_annotate --inclusive=yes "$work/cg.$m" 2>/dev/null |
-           grep -E 'PairGranHookeHistory::compute\(|PairTDEMGran::compute\(' | head -1 | awk '{gsub(",","",$1); print $1}')
-    echo "$m $total $pair" >> "$work/cg.summary"
-  done
-  steps=$timed_steps
-  awk -v n="${CALLGRIND_STEPS:-50}" '{t[$1]=$2; p[$1]=$3} END{
-    printf "callgrind, %d steps: instructions total stock %.4g, tdem %.4g, ratio %.4f\n", n, t["stock"], t["tdem"], t["tdem"]/t["stock"];
-    printf "callgrind, %d steps: instructions in pair compute() stock %.4g, tdem %.4g, ratio %.4f\n", n, p["stock"], p["tdem"], p["tdem"]/p["stock"] }' "$work/cg.summary"
-fi
+chute_callgrind stock tdem
