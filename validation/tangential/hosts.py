@@ -48,6 +48,7 @@ def case_params(cid, gamma_n):
     return {
         "lsd_cs": dict(kappa=S.KAPPA_LIN),
         "lsd_sd": dict(kappa=S.KAPPA_LIN, gammat=S.KAPPA_LIN * gamma_n, ratio=S.KAPPA_LIN),
+        "lsd_ls0": dict(kappa=S.KAPPA_LIN, gammat=0.0, ratio=0.0),
         "lsd_hw": dict(gammat=S.GAMMAT_HW, ratio=S.GAMMAT_HW / gamma_n),
         "lsd_wb": dict(kappa=S.KAPPA_LIN),
         "lsd_md": dict(),

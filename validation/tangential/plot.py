@@ -4,7 +4,8 @@
 
     plot.py RESULTS_DIR
 
-Reads RESULTS_DIR/sweep_harness.csv (sweep.py), and RESULTS_DIR/sweep_liggghts.csv,
+Reads RESULTS_DIR/sweep_harness.csv and RESULTS_DIR/sweep_analytic.csv (sweep.py: the chapter-4
+closed form, tdem-collide --analytic), and RESULTS_DIR/sweep_liggghts.csv,
 RESULTS_DIR/sweep_lammps.csv if a host run wrote them (same columns; hosts.py) with their references
 RESULTS_DIR/sweep_harness_<host>.csv (tdem-collide with the host's lever arm and time step),
 data/kharaz2001.csv and data/physics_reference_8_5.csv; writes RESULTS_DIR/*.png and
@@ -34,6 +35,7 @@ THETA_GS_B1 = math.degrees(math.atan(1.75 * (1 + E) * MU))   # beta_0 = 1 corner
 LABELS = {
     "lsd_cs": "LSD + Cundall-Strack (κ=2/7)",
     "lsd_sd": "LSD + spring-dashpot (κ=2/7, γt=2/7 γn)",
+    "lsd_ls0": "LSD + linear spring, no dashpot (κ=2/7)",
     "lsd_hw": "LSD + Haff-Werner",
     "lsd_wb": "LSD + Walton-Braun (κ=2/7)",
     "lsd_md": "LSD + Mindlin-Deresiewicz",
@@ -193,6 +195,38 @@ def classify(r):
     return stick, micro, gross
 
 
+# ---- the chapter-4 closed form (sweep_analytic.csv) -----------------------------------------------
+# Laws that are the closed form's model (LSD + linear spring with Coulomb limit, truncated on slip,
+# no tangential dashpot): each is compared with it in the harness and in both hosts.
+CLOSED_FORM_LAWS = ("lsd_cs", "lsd_ls0")
+# Regime of an angle from the closed form's first stick -> slip switch t_s (the contact time t_c):
+# stick if t_s > 0.95 t_c (or none; only the end-of-contact slip of 3.4), gross slip if
+# t_s < 0.05 t_c (slip from the start on), else the transition (slip sets in within the contact).
+REGIMES = (("stick", "stick, end slip only (t_s > 0.95 t_c)"),
+           ("transition", "stick then slip (0.05 t_c <= t_s <= 0.95 t_c)"),
+           ("gross", "gross slip (t_s < 0.05 t_c)"))
+CF_TOL = 1e-4   # beta, e_t, spin R/v_t0 of the harness and LAMMPS against the closed form
+
+
+def regime_of(a):
+    f = a["t_first_slip"] / a["contact_time"]
+    return np.where(np.isnan(f) | (f > 0.95), "stick", np.where(f < 0.05, "gross", "transition"))
+
+
+def closed_form_diff(d, a):
+    """Max abs. differences of a run d (any angles that a has) from the closed form a, per angle."""
+    idx = [int(np.argmin(np.abs(a["angle_deg"] - t))) for t in d["angle_deg"]]
+    if any(abs(a["angle_deg"][i] - t) > 1e-9 for i, t in zip(idx, d["angle_deg"])):
+        return None
+    scale = V * np.sin(np.radians(d["angle_deg"])) / R
+    return {"angle": d["angle_deg"], "regime": regime_of(a)[idx],
+            "beta": np.abs(d["beta"] - a["beta"][idx]), "e_t": np.abs(d["e_t"] - a["e_t"][idx]),
+            "spin": np.abs(d["spin_after"] - a["spin_after"][idx]) / scale,
+            "reb_c": np.abs(d["rebound_angle_contact"] - a["rebound_angle_contact"][idx]),
+            "reb_com": np.abs(d["rebound_angle_com"] - a["rebound_angle_com"][idx]),
+            "switches": (d["n_switches"], a["n_switches"][idx])}
+
+
 def main():
     res = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "results")
     problems = []
@@ -203,6 +237,12 @@ def main():
             runs[host] = load_sweep(p)
     H = runs["harness"]
     R85 = H.pop("ref85", None)
+    ap = os.path.join(res, "sweep_analytic.csv")
+    A = load_sweep(ap) if os.path.exists(ap) else {}
+    CF = A.get("lsd_cs")          # the closed form of lsd_cs and lsd_ls0
+    A85 = A.get("ref85")
+    if CF is None:
+        problems.append("no closed form (sweep_analytic.csv with case lsd_cs; sweep.py --analytic)")
     kh = kharaz()
     ref = read_csv(os.path.join(HERE, "data", "physics_reference_8_5.csv"))
     ref = {k: np.array([float(r[k]) for r in ref]) for k in ref[0]}
@@ -219,6 +259,11 @@ def main():
         ax.plot(x, scale * rb1[key], "k:", lw=2.2, label="rigid body (Walton), β0=1")
         ax.plot(x, scale * rbf[key], color="0.45", ls=":", lw=2.2,
                 label="rigid body, β0=%.2f (fit to Kharaz e_t)" % beta0_fit)
+
+    def closed_form(ax, xkey, ykey, scale=1.0):
+        if CF is not None:
+            ax.plot(CF[xkey], scale * CF[ykey], color="red", ls=(0, (1.5, 1.5)), lw=2.0, zorder=5,
+                    label="closed form ch. 4 (LSD + spring/Coulomb, κ=2/7; analytic.h)")
 
     def host_marks(ax, xkey, ykey, scale=1.0):
         for host, mk in (("liggghts", "o"), ("lammps", "^")):
@@ -238,7 +283,8 @@ def main():
     ax.plot(KAPPA * np.tan(np.radians(th_k)) / MU, 3.5 * (1 - et_k) - 1, "ks", mfc="none",
             label="Kharaz et al. 2001, β = 3.5(1-e_t)-1 (ω0=0)")
     ax.plot(KAPPA * ref["slip_ratio_in"], ref["beta"], "rx", ms=9, mew=2,
-            label="phys. ref. 8.5 (ch.-4 stand-in)")
+            label="phys. ref. 8.5 (fine-step integration)")
+    closed_form(ax, "psi1", "beta")
     host_marks(ax, "psi1", "beta")
     off = ["%s: beta = %+.2f at psi1 = %.2g" % (c, b, p) for c in order
            for p, b in zip(H[c]["psi1"], H[c]["beta"]) if b > 1.1 or b < -1.05]
@@ -267,7 +313,9 @@ def main():
     axs[0].plot(kh["rebound_angle"][:, 0], kh["rebound_angle"][:, 1], "ks", mfc="none",
                 label="Kharaz et al. 2001")
     axs[1].plot(ref["impact_angle_deg"], ref["rebound_angle_contact_deg"], "rx", ms=9, mew=2,
-                label="phys. ref. 8.5 (ch.-4 stand-in)")
+                label="phys. ref. 8.5 (fine-step integration)")
+    closed_form(axs[0], "angle_deg", "rebound_angle_com")
+    closed_form(axs[1], "angle_deg", "rebound_angle_contact")
     host_marks(axs[0], "angle_deg", "rebound_angle_com")
     host_marks(axs[1], "angle_deg", "rebound_angle_contact")
     axs[0].set_title("centre of mass: atan(v_t'/v_n')")
@@ -289,6 +337,7 @@ def main():
     rigid_lines(ax, th_fine, "spin", -1.0)
     ax.plot(kh["spin"][:, 0], kh["spin"][:, 1], "ks", mfc="none", label="Kharaz et al. 2001")
     ax.plot(ref["impact_angle_deg"], -ref["spin_after"], "rx", ms=9, mew=2, label="phys. ref. 8.5")
+    closed_form(ax, "angle_deg", "spin_after", -1.0)
     host_marks(ax, "angle_deg", "spin_after", -1.0)
     ax.set_xlabel("impact angle from the normal [deg]")
     ax.set_ylabel("spin after impact |ω'| [rad/s]")
@@ -304,6 +353,7 @@ def main():
     rigid_lines(ax, th_fine, "e_t")
     ax.plot(th_k, et_k, "ks", mfc="none", label="Kharaz et al. 2001")
     ax.plot(ref["impact_angle_deg"], ref["e_t"], "rx", ms=9, mew=2, label="phys. ref. 8.5")
+    closed_form(ax, "angle_deg", "e_t")
     host_marks(ax, "angle_deg", "e_t")
     ax.set_xlabel("impact angle from the normal [deg]")
     ax.set_ylabel("e_t = v_t'/v_t0")
@@ -349,6 +399,36 @@ def main():
             problems.append("%s: beta deviates from the gross-sliding line by %.3f above 60 deg" %
                             (c, reg[c]["big_max"]))
 
+    # (v) the chapter-4 closed form: the laws that are its model, in the harness and in both hosts
+    cf_rows = []       # (law, source label, diff dict, checked)
+    if CF is not None:
+        refs_h = {}
+        for h in ("lammps", "liggghts"):
+            rp = os.path.join(res, "sweep_harness_%s.csv" % h)
+            if os.path.exists(rp):
+                refs_h[h] = load_sweep(rp)
+        for c in CLOSED_FORM_LAWS:
+            srcs = [("harness (lever R, 1e5 steps/contact)", H.get(c), True)]
+            if "lammps" in runs:
+                srcs += [("harness at the LAMMPS step", refs_h.get("lammps", {}).get(c), True),
+                         ("LAMMPS", runs["lammps"].get(c), True)]
+            if "liggghts" in runs:
+                srcs += [("harness, lever R - xi/2, LIGGGHTS step", refs_h.get("liggghts", {}).get(c), False),
+                         ("LIGGGHTS (lever R - xi/2)", runs["liggghts"].get(c), False)]
+            for lab, d, checked in srcs:
+                if d is None:
+                    problems.append("%s: no %s run to compare with the closed form" % (c, lab))
+                    continue
+                df = closed_form_diff(d, CF)
+                if df is None:
+                    problems.append("%s %s: the closed form lacks some of its angles" % (c, lab))
+                    continue
+                cf_rows.append((c, lab, df, checked))
+                worst = max(float(np.max(df[k])) for k in ("beta", "e_t", "spin"))
+                if checked and worst > CF_TOL:
+                    problems.append("%s %s differs from the closed form by %.2e (> %g)" % (c, lab, worst, CF_TOL))
+    cf_harness = {c: df for c, lab, df, _ in cf_rows if lab.startswith("harness (")}
+
     # ---- table.md --------------------------------------------------------------------------------
     L = []
     L.append("# Oblique sphere-wall impacts: regimes and errors per tangential law\n")
@@ -374,14 +454,22 @@ def main():
              "(Walton's rigid-body branch), within 0.01 from the onset angle on. The error columns give "
              "beta minus the line for theta >= %.1f deg, where the rigid-body model slides for any "
              "beta_0 >= 0, and for theta >= 60 deg.\n" % THETA_GS_ALL)
+    L.append("The last column is the law against the chapter-4 closed form (next section) where it is "
+             "that model: max |beta - closed form| in the closed form's regimes stick / transition / gross slip "
+             "(- : not the closed form's model).\n")
     L.append("| case | stick | micro-slip transition | gross slip | beta - line, theta >= %.1f deg: RMS / max "
-             "| max, theta >= 60 deg |" % THETA_GS_ALL)
-    L.append("|---|---|---|---|---|---|")
+             "| max, theta >= 60 deg | beta - closed form: stick / transition / gross |" % THETA_GS_ALL)
+    L.append("|---|---|---|---|---|---|---|")
     for c in order:
         s, m, g = classify(reg[c])
         r = reg[c]
-        L.append("| `%s` %s | %s | %s | %s | %.1e / %.1e | %.1e |" % (
-            c, LABELS.get(c, ""), s, m, g, r["gs_rms"], r["gs_max"], r["big_max"]))
+        cfc = "-"
+        if c in cf_harness:
+            df = cf_harness[c]
+            cfc = " / ".join("%.1e" % np.max(df["beta"][df["regime"] == k]) if np.any(df["regime"] == k)
+                             else "none" for k, _ in REGIMES)
+        L.append("| `%s` %s | %s | %s | %s | %.1e / %.1e | %.1e | %s |" % (
+            c, LABELS.get(c, ""), s, m, g, r["gs_rms"], r["gs_max"], r["big_max"], cfc))
     L.append("")
     L.append("## Errors against Kharaz et al. (2001)\n")
     L.append("Model curves (1 deg steps, linear interpolation) minus the digitised points "
@@ -402,15 +490,68 @@ def main():
             ("`%s` %s" % (c, lab)) if lab else c, k["e_t"][0], k["e_t"][1], k["spin"][0], k["spin"][1],
             k["rebound_angle"][0], k["rebound_angle"][1]))
     L.append("")
-    L.append("## Chapter-4 reference (linear laws)\n")
-    L.append("The closed-form (event-driven) solution of the chapter-4 issue does not exist in tdem yet. Its "
-             "stand-in is the table of physics_reference.md 8.5 (LSD + Cundall-Strack, kappa = 2/7, computed "
-             "independently by a fine-step integration, ~1e-5 in beta; `data/physics_reference_8_5.csv`).\n")
+    L.append("## Chapter-4 closed form (linear laws)\n")
+    L.append("The closed form is the event-driven solution of physics_reference.md 4 (`src/collision/analytic.h`, "
+             "`tdem-collide --analytic`; no time stepping, switch times by root finding of the closed forms): LSD "
+             "normal law and a linear tangential spring with Coulomb limit mu |F_n|, truncated to the limit on "
+             "slip, no tangential dashpot, lever arm R. Two laws are this model: `lsd_cs` (Cundall-Strack) and "
+             "`lsd_ls0` (`linear_spring` with gamma_t = 0, spring-only reset); they must coincide with it and "
+             "with each other. It is drawn in every plot (red dotted). Differences are maxima over the angles "
+             "(spin: |d omega'| R/v_t0; rebound angles in degrees). The check is %g in beta, e_t and spin for "
+             "the runs with lever arm R (harness, LAMMPS); LIGGGHTS uses the lever arm R - xi/2, which is not the "
+             "closed form's model: its rows show that effect (its own harness reference is in \"Host runs\").\n"
+             % CF_TOL)
+    if CF is None:
+        L.append("No closed form in this run (`sweep_analytic.csv` missing).\n")
+    else:
+        L.append("| law | source | angles | max abs. d beta | max abs. d e_t | max abs. d spin x R/v_t0 | "
+                 "max abs. d rebound angle, contact point / CoM [deg] | stick/slip switches as the closed form |")
+        L.append("|---|---|---|---|---|---|---|---|")
+        for c, lab, df, _ in cf_rows:
+            nsw, nsw_a = df["switches"]
+            same = "%d of %d angles" % (int(np.sum(nsw == nsw_a)), len(nsw)) if not np.all(np.isnan(nsw)) else "-"
+            L.append("| `%s` | %s | %d | %.1e | %.1e | %.1e | %.1e / %.1e | %s |" % (
+                c, lab, len(df["angle"]), np.max(df["beta"]), np.max(df["e_t"]), np.max(df["spin"]),
+                np.max(df["reb_c"]), np.max(df["reb_com"]), same))
+        L.append("")
+        rg = regime_of(CF)
+        L.append("Regimes of the closed form (from its first stick -> slip switch t_s; with kappa = 2/7 and this "
+                 "light damping the spring never re-sticks after slip has set in, so there is no stick-slip-stick "
+                 "sequence) and the error of each law and source in each: \"yes\" if beta, e_t and spin are within "
+                 "%g of the closed form at every angle of the regime.\n" % CF_TOL)
+        hdr = "| law | source |"
+        for k, name in REGIMES:
+            th = CF["angle_deg"][rg == k]
+            hdr += " %s: %s |" % (name, ("%g-%g deg" % (th.min(), th.max())) if th.size else "no angle")
+        L.append(hdr)
+        L.append("|---|---|---|---|---|")
+        for c, lab, df, checked in cf_rows:
+            cells = []
+            for k, _ in REGIMES:
+                sel = df["regime"] == k
+                if not np.any(sel):
+                    cells.append("no angle")
+                    continue
+                w = max(float(np.max(df[q][sel])) for q in ("beta", "e_t", "spin"))
+                verdict = ("yes" if w <= CF_TOL else "no") if checked else "other lever arm"
+                cells.append("%s: max %.1e (%d angles)" % (verdict, w, int(np.sum(sel))))
+            L.append("| `%s` | %s | %s |" % (c, lab, " | ".join(cells)))
+        L.append("")
     if ref_dev:
-        L.append("The harness with exactly the 8.5 parameters (k = 2.583963e7 N/m, gamma = 1.057811 kg/s: "
-             "realised e = 0.98008; case `ref85`, not plotted) against it (9 angles 5-80 deg, max abs. deviation): beta %.1e, e_t %.1e, "
-                 "spin %.3f rad/s, contact-point rebound angle %.1e deg.\n" % (
-                     ref_dev["beta"], ref_dev["e_t"], ref_dev["spin_after"], ref_dev["rebound_angle_contact"]))
+        L.append("physics_reference.md 8.5 (LSD + Cundall-Strack, kappa = 2/7, an independent fine-step "
+                 "integration, ~1e-5 in beta; `data/physics_reference_8_5.csv`) with exactly its parameters "
+                 "(k = 2.583963e7 N/m, gamma = 1.057811 kg/s: realised e = 0.98008; case `ref85`, not plotted), 9 "
+                 "angles 5-80 deg, max abs. deviation: harness beta %.1e, e_t %.1e, spin %.3f rad/s, contact-point "
+                 "rebound angle %.1e deg." % (ref_dev["beta"], ref_dev["e_t"], ref_dev["spin_after"],
+                                               ref_dev["rebound_angle_contact"]))
+    if A85 is not None:
+        got = {k: np.interp(ref["impact_angle_deg"], A85["angle_deg"], A85[k]) for k in ("beta", "e_t", "spin_after")}
+        d85 = {k: float(np.max(np.abs(got[k] - ref[k]))) for k in got}
+        L.append(" The closed form with the same parameters: beta %.1e, e_t %.1e, spin %.3f rad/s." % (
+            d85["beta"], d85["e_t"], d85["spin_after"]))
+        if d85["beta"] > 3e-5 or d85["e_t"] > 3e-5:
+            problems.append("closed form differs from physics_reference 8.5 by %.2e in beta" % d85["beta"])
+    L.append("")
     hosts = [h for h in runs if h != "harness"]
     L.append("## Host runs\n")
     if not hosts:

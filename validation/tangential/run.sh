@@ -23,14 +23,18 @@ if [ ! -x "$collide" ]; then
 fi
 results="$here/results"
 mkdir -p "$results"
-rm -f "$results"/*.png "$results"/table.md "$results"/cases.md "$results"/sweep_harness.csv
+rm -f "$results"/*.png "$results"/table.md "$results"/cases.md "$results"/sweep_harness.csv \
+  "$results"/sweep_analytic.csv
 status=0
 cd "$here" || exit 2
 
 # 1. The harness: every case of sweep.py (normal law x tangential law) at every angle.
 echo "sweeping the impact angle with $collide ..."
+#    With it, the chapter-4 closed form (tdem-collide --analytic) of the linear laws it covers
+#    (lsd_cs, lsd_ls0; and the 8.5 parameters) at the same angles and the host angles:
+#    results/sweep_analytic.csv.
 "$py" sweep.py "$collide" results/sweep_harness.csv --step "${STEP:-1}" --jobs "${JOBS:-2}" \
-  --cases-md results/cases.md || exit 2
+  --cases-md results/cases.md --analytic results/sweep_analytic.csv --extra-angles "${HOST_ANGLES:-}" || exit 2
 
 # 2. Host runs (hosts.py): the same cases (sweep.configs()) as spheres hitting a plane wall in
 #    tdem-liggghts / tdem-lammps at 12 angles (1-80 deg; HOST_ANGLES overrides), written to

@@ -67,6 +67,9 @@ def configs(collide):
                                                           "--gammat", repr(KAPPA_LIN * gamma_n)],
          "kappa = 2/7, gamma_t = (2/7) gamma_n = %.5g kg/s (beta_0 = e), reset: spring only" %
          (KAPPA_LIN * gamma_n)),
+        ("lsd_ls0", "lsd", "linear_spring", "LSD + linear spring, no dashpot", "linear",
+         LSD + ["--tangential", "linear_spring"] + mu + ["--kappa", repr(KAPPA_LIN), "--gammat", "0"],
+         "kappa = 2/7, gamma_t = 0, reset: spring only (must coincide with lsd_cs and the closed form)"),
         ("lsd_hw", "lsd", "haff_werner", "LSD + Haff-Werner", "linear",
          LSD + ["--tangential", "haff_werner"] + mu + ["--gammat", repr(GAMMAT_HW)],
          "gamma_t = 10 m_t/t_c = %.4g kg/s (slip relaxes in t_c/10)" % GAMMAT_HW),
@@ -105,6 +108,27 @@ REF85 = ("ref85", "lsd", "cundall_strack", "physics_reference 8.5", "linear",
          "physics_reference 8.5 parameters")
 
 
+# The closed form of chapter 4 (tdem-collide --analytic, src/collision/analytic.h: event-driven,
+# no time stepping) for the cases it covers: LSD + a linear spring with Coulomb limit, truncated on
+# slip, no tangential dashpot. Both lsd_cs and lsd_ls0 are this model (the same curve); ref85 is
+# the closed form with the 8.5 coefficients. Written to --analytic OUT with the columns below.
+ANALYTIC_CASES = {"lsd_cs": ("lsd_cs", "lsd_ls0"), "ref85": ("ref85",)}
+
+
+def analytic_case(case):
+    """The case as a --analytic run: same normal law and k_t, tangential law cundall_strack."""
+    cid, normal, _tang, label, family, args, note = case
+    args = list(args)
+    i = args.index("--tangential")
+    args[i + 1] = "cundall_strack"
+    if "--gammat" in args:          # linear_spring without dashpot only
+        j = args.index("--gammat")
+        if float(args[j + 1]) != 0.0:
+            raise ValueError("case %s: the closed form has no tangential dashpot" % cid)
+        del args[j:j + 2]
+    return (cid, normal, "cundall_strack", label + " (closed form)", family, args + ["--analytic"], note)
+
+
 COLUMNS = ["case", "normal", "tangential", "family", "angle_deg", "psi1", "slip_ratio_in",
            "beta", "e_t", "spin_after", "rebound_angle_com", "rebound_angle_contact", "slip_ratio_out",
            "e", "contact_time", "dissipated_energy", "max_tangential_force", "sliding_at_start", "n_switches",
@@ -120,7 +144,7 @@ def run_one(collide, case, angle):
         raise RuntimeError("tdem-collide failed (%d): %s\n%s" % (p.returncode, " ".join(cmd), p.stderr))
     j = json.loads(p.stdout)
     rb = j["rigid_body"]
-    return {
+    row = {
         "case": cid, "normal": normal, "tangential": tang, "family": family, "angle_deg": angle,
         "psi1": j["psi1"], "slip_ratio_in": j["slip_ratio_in"], "beta": j["beta"], "e_t": j["e_t"],
         "spin_after": j["spin_after"], "rebound_angle_com": j["rebound_angle_com"],
@@ -133,6 +157,10 @@ def run_one(collide, case, angle):
         "rb_rebound_angle_contact": rb["rebound_angle_contact"],
         "rb_gross_sliding": int(bool(rb["gross_sliding"])),
     }
+    if "--analytic" in args:   # the closed form's first stick -> slip switch (regime of the angle)
+        ts = [sw["t"] for sw in j.get("stick_slip_switches") or [] if sw.get("to") == "slip"]
+        row["t_first_slip"] = 0.0 if j["sliding_at_start"] else (ts[0] if ts else "")
+    return row
 
 
 def main():
@@ -142,6 +170,10 @@ def main():
     ap.add_argument("--step", type=float, default=1.0)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--cases-md", help="also write the case table (markdown) here")
+    ap.add_argument("--analytic", help="also write the closed form (tdem-collide --analytic) of the "
+                    "cases in ANALYTIC_CASES here")
+    ap.add_argument("--extra-angles", default="",
+                    help="comma-separated angles added to the closed form's (the host angles)")
     a = ap.parse_args()
     if not (0 < a.step <= 10):
         sys.exit("sweep.py: --step = %g is outside the allowed range (0, 10]" % a.step)
@@ -159,6 +191,27 @@ def main():
         w.writeheader()
         for r in rows:
             w.writerow(r)
+    if a.analytic:
+        try:
+            extra = [float(x) for x in a.extra_angles.split(",") if x.strip()]
+        except ValueError:
+            sys.exit("sweep.py: --extra-angles '%s' is not a comma-separated list of numbers" % a.extra_angles)
+        bad = [x for x in extra if not (0 < x < 90)]
+        if bad:
+            sys.exit("sweep.py: --extra-angles value %g is outside the allowed range (0, 90) deg" % bad[0])
+        by_id = {c[0]: c for c in cases + [REF85]}
+        ajobs = []
+        for cid in ANALYTIC_CASES:
+            ang = REF85_ANGLES if cid == "ref85" else sorted(set(angles + extra))
+            ajobs += [(analytic_case(by_id[cid]), t) for t in ang]
+        with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
+            arows = list(ex.map(lambda ct: run_one(a.collide, *ct), ajobs))
+        with open(a.analytic, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=COLUMNS + ["t_first_slip"])
+            w.writeheader()
+            for r in arows:
+                w.writerow(r)
+        print("sweep.py: closed form of %s -> %s" % (", ".join(ANALYTIC_CASES), a.analytic))
     if a.cases_md:
         with open(a.cases_md, "w") as f:
             f.write("| case | normal law | tangential law | parameters |\n|---|---|---|---|\n")
