@@ -368,6 +368,60 @@ for cmdline, option in (
     else:
         print(f"ok   exit 2: {p.stderr.strip()[:110]}...")
 
+# ---- --scheme: the whole-step integration of collision/integrate_impact.h
+LSD52 = "--law lsd --k 1e5 --gamma 4.48097 --m1 0.01 --R1 0.01 --wall --v0 1"
+d52 = 4.48097 / (2 * 0.01)
+w52 = math.sqrt(1e5 / 0.01 - d52 * d52)
+e52 = math.exp(-d52 * math.pi / w52)  # the closed form (physics_reference 2.2.2, variant A)
+# rk4 with dt = t_n/1e4 exactly (the contact lasts a whole number of steps, so the time-grid errors
+# of the force jumps at touch (gamma v0) and at separation cancel, as in physics_reference 5.2)
+tn52 = math.pi / w52
+j = collide(f"{LSD52} --scheme rk4 --dt {tn52 / 1e4!r} --gap 1e-6")
+if j:
+    check_abs("scheme rk4 dt = t_n/1e4: e vs closed form", j["e"], e52, 1e-6)
+    if j.get("scheme") != "rk4" or j.get("gap") != 1e-6 or j.get("evaluations_per_step") != 4:
+        failures.append(f"scheme rk4: scheme/gap/evaluations_per_step keys wrong: {j.get('scheme')} {j.get('gap')} "
+                        f"{j.get('evaluations_per_step')}")
+    check("scheme rk4 reference e (analytic)", j["reference"]["e"], e52, 1e-12)
+# at a step that is not a whole fraction of t_n (--steps: t_c estimate/1e4) the force jumps make
+# every scheme first order in e: mean |de| over 8 phases ~ gamma v0 dt/m * O(0.1) -> (1e-6, 3e-5)
+for s in ("rk4", "velocity_verlet"):
+    j = collide(f"{LSD52} --scheme {s} --steps 10000 --phases 8")
+    if j:
+        err = j["abs_error"]["e"]
+        ok = 1e-6 < err < 3e-5
+        print(f"{'ok  ' if ok else 'FAIL'} scheme {s} --steps 1e4, 8 phases: mean |de| = {err:.2e} (time-grid error, "
+              "first order: in (1e-6, 3e-5))")
+        if not ok:
+            failures.append(f"scheme {s} --steps 1e4: mean |de| {err}")
+# phase average at 20 steps per contact against physics_reference 5.2 (symplectic Euler 4.7e-3 with
+# dt = t_n/20 exactly; t_n = pi/w)
+j = collide(f"{LSD52} --scheme symplectic_euler --dt {tn52 / 20!r} --phases 16")
+if j:
+    check("scheme symplectic_euler 16 phases N=20 mean |de| (table 5.2)", j["abs_error"]["e"], 4.7e-3, 0.05)
+    if len(j.get("phase_e", [])) != 16:
+        failures.append("scheme --phases 16: phase_e does not have 16 entries")
+# oblique with a tangential law: the closed-form reference is given and the error is small at 2000 steps
+j = collide(f"{BASE85} --angle 25 --tangential cundall_strack --mu 0.092 --kappa 0.2857142857142857 "
+            "--scheme gear5 --steps 2000 --gap 1e-7")
+if j:
+    check_abs("scheme gear5 oblique beta vs analytic", j["beta"], j["reference"]["beta"], 2e-3)
+    check_abs("scheme gear5 oblique e vs analytic", j["e"], j["reference"]["e"], 1e-4)
+for cmdline, option in (
+        (f"{LSD52} --scheme rk5", "--scheme = 'rk5' is not one of: euler, symplectic_euler"),
+        (f"{LSD52} --scheme heun --gap -1", "--gap = -1"),
+        (f"{LSD52} --gap 0.1", "--gap needs --scheme"),
+        (f"{LSD52} --phases 4", "--phases needs --scheme"),
+        (f"{LSD52} --scheme rk4 --phases 2.5", "--phases"),
+        ("--law lsd --k 1e5 --m1 0.01 --m2 0.01 --R1 0.01 --R2 0.01 --v0 1 --scheme rk4", "--wall"),
+        ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --scheme rk4", "--R1"),
+        (f"{LSD52} --scheme rk4 --analytic", "--scheme")):
+    p = run(cmdline, expect=2)
+    if option not in p.stderr or "Traceback" in p.stderr or p.stdout:
+        failures.append(f"'{cmdline}': message does not name {option}: {p.stderr.strip()}")
+    else:
+        print(f"ok   exit 2: {p.stderr.strip()[:120]}")
+
 if failures:
     print("\nFAILURES:\n  " + "\n  ".join(failures))
     sys.exit(1)

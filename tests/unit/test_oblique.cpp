@@ -507,6 +507,8 @@ TEST(Oblique, MemoryLawsGainNoEnergyAtGrazingSmallAngles) {
     }
     // Mindlin-Deresiewicz: beta tends to one value as the angle vanishes (no-slip limit).
     if (theta == 0.01) beta_small = a.beta;
-    if (theta == 0.05) EXPECT_NEAR(a.beta, beta_small, 0.01);
+    if (theta == 0.05) {
+      EXPECT_NEAR(a.beta, beta_small, 0.01);
+    }
   }
 }

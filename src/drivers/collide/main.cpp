@@ -3,7 +3,10 @@
 // head-on (src/collision/head_on.h), or oblique with spin and a tangential law
 // (src/collision/oblique.h, with --angle, --spin or --tangential). Prints JSON (e, contact time,
 // largest overlap and force, residual overlap, ...; beta, e_t, spin and rebound angles for oblique
-// impacts) to stdout and optionally writes the force-overlap curve as CSV. See docs/collide.md.
+// impacts) to stdout and optionally writes the force-overlap curve as CSV. With --scheme the
+// sphere-wall impact is integrated in whole steps with a chosen time-integration scheme from free
+// flight, as a host engine does it (src/collision/integrate_impact.h), optionally averaged over
+// the start phase of the contact (--phases). See docs/collide.md.
 // Exit status: 0 success, 1 the contact did not end / the curve could not be written,
 // 2 bad input (the message names the option, the value and the allowed range).
 #include <cmath>
@@ -15,12 +18,14 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "collision/conversions.h"
 #include "collision/head_on.h"
 #include "collision/analytic.h"
+#include "collision/integrate_impact.h"
 #include "collision/oblique.h"
 #include "collision/rigid_body.h"
 #include "contact/tangential/di_renzo.h"
@@ -129,6 +134,21 @@ Integration and output:
   --dt DT                 fixed time step [s] (overrides --steps)
   --curve FILE            write the samples t,xi,xi_dot,F (CSV, one per step) to FILE
                           (oblique: t,xi,xi_dot,F,Ft,vs,sliding)
+  --scheme NAME           integrate a sphere-wall impact (--wall, --R1) in whole steps with the
+                          scheme NAME as a host engine does (collision/integrate_impact.h): from
+                          free flight at z = R1 + GAP, predict - force - correct per step, the
+                          contact ends at the first step with overlap <= 0, results read 10
+                          free-flight steps later. NAME: one-evaluation schemes
+                          euler|symplectic_euler|taylor2|taylor3|leapfrog|position_verlet|
+                          velocity_verlet|velocity_verlet_sync|beeman|ab2|ab3|ab4|ab5|abm4|gear4|
+                          gear5|gear6, or the harness-only heun|rk4|vv2|abm4_pece. Step: --dt, or
+                          --steps N per estimated contact time (default 1000). Any normal law;
+                          --tangential as above; lever arm radius only
+  --gap GAP               with --scheme: the start gap [m], >= 0 (default 0: touch at t = 0)
+  --phases P              with --scheme: P runs with gap GAP + (i + 1/2)/P v_n0 dt, i = 0..P-1
+                          (the contact start phase on the time grid); prints the means and, where
+                          the closed form exists (lsd, tangential none or cundall_strack without
+                          --gammat), the mean |error| against it
   --analytic              closed-form solution instead of the integrator (collision/analytic.h):
                           only a sphere-wall impact (--wall), --law lsd (any parameter form, either
                           --end) and --tangential none or cundall_strack without --gammat, lever arm
@@ -165,7 +185,7 @@ class Args {
         "--e-fit", "--e-coef", "--tc-fit", "--tc-coef", "--v-min", "--v-max", "--e-min", "--al", "--p",
         "--aul", "--q", "--angle", "--spin", "--spin2", "--tangential", "--mu", "--kt", "--kappa", "--gammat",
         "--friction-limit", "--slip-reset", "--gstar", "--eta-ratio", "--beta0", "--psi-kappa", "--lever-arm",
-        "--analytic"};
+        "--analytic", "--scheme", "--gap", "--phases"};
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
       if (a == "-h") a = "--help";
@@ -397,6 +417,19 @@ struct Oblique {
   bool rb_valid = false;
 };
 
+// --scheme: the whole-step integration of integrate_impact.h (optionally phase-averaged).
+struct SchemeRun {
+  bool active = false;
+  collision::ImpactScheme scheme;
+  collision::ImpactSetup setup;
+  collision::ImpactOptions opt;
+  int phases = 0;  // 0: one run at the given gap
+  bool have_ref = false;
+  collision::ImpactReference ref;
+  collision::PhaseAverage pa;
+  collision::ImpactResult one;
+};
+
 struct Run {
   std::string law, end, damping;  // damping: hertz only
   std::vector<std::pair<std::string, double>> params;  // the coefficients used
@@ -404,6 +437,7 @@ struct Run {
   std::vector<std::pair<std::string, double>> closed;  // closed-form predictions, where known
   collision::Result result;
   Oblique obl;
+  SchemeRun sch;
   bool analytic = false;  // --analytic: closed form (collision/analytic.h) instead of the integrator
 };
 
@@ -532,8 +566,121 @@ double constant_normal_stiffness(const Run& run) {
   return NAN;
 }
 
+// The closed-form reference of integrate_impact (lsd with the Cundall-Strack spring without dashpot
+// or frictionless): sets run.sch.ref.
+template <class Law, class TLaw>
+void scheme_reference(Run& run, const Law& law, const TLaw& tlaw) {
+  SchemeRun& S = run.sch;
+  if constexpr (std::is_same_v<Law, collision::LsdLaw> &&
+                (std::is_same_v<TLaw, collision::Frictionless> ||
+                 std::is_same_v<TLaw, collision::CundallStrackTangential>)) {
+    namespace an = collision::analytic;
+    an::Input in;
+    in.m = S.setup.m;
+    in.R = S.setup.R;
+    in.kn = law.c.k;
+    in.gn = law.c.gamma;
+    in.end = law.end_mode;
+    in.vn0 = S.setup.speed * std::cos(S.setup.angle);
+    in.vt0 = S.setup.speed * std::sin(S.setup.angle);
+    in.omega0 = S.setup.omega0;
+    if constexpr (std::is_same_v<TLaw, collision::CundallStrackTangential>) {
+      if (tlaw.p.gammat != 0.0) return;
+      in.kt = tlaw.p.kt;
+      in.mu = tlaw.p.mu;
+      in.limit = tlaw.limit;
+    } else {
+      in.kt = law.c.k;
+      in.mu = 0.0;
+    }
+    try {
+      const an::Output x = an::impact(in);
+      S.ref.e = x.e;
+      S.ref.beta = x.beta;
+      S.ref.e_t = x.e_t;
+      S.ref.omega = x.omega;
+      S.ref.rebound_angle_com = x.rebound_angle_com;
+      S.ref.rebound_angle_contact = x.rebound_angle_contact;
+      S.have_ref = true;
+    } catch (const std::exception&) {  // e.g. overdamped: no closed form
+    }
+  } else {
+    (void)run, (void)law, (void)tlaw;
+  }
+}
+
+// --scheme: integrate_impact (one run, or the phase average) into run.result / run.obl.r.
+template <class Law, class TLaw>
+void scheme_with(Run& run, Law& law, TLaw& tlaw) {
+  SchemeRun& S = run.sch;
+  Oblique& o = run.obl;
+  scheme_reference(run, law, tlaw);
+  collision::ImpactResult x;
+  if (S.phases > 0) {
+    S.pa = collision::phase_averaged(law, tlaw, S.scheme, S.setup, S.opt, S.phases, S.ref, true);
+    x = S.pa.runs.front();
+    x.ended = S.pa.ended == S.phases;
+    if (x.ended) {  // the means over the phases
+      auto mean = [&](auto get) {
+        double s = 0.0;
+        for (const auto& q : S.pa.runs) s += get(q);
+        return s / S.phases;
+      };
+      using R = collision::ImpactResult;
+      x.e = mean([](const R& q) { return q.e; });
+      x.vn = mean([](const R& q) { return q.vn; });
+      x.vt = mean([](const R& q) { return q.vt; });
+      x.vs = mean([](const R& q) { return q.vs; });
+      x.omega1 = mean([](const R& q) { return q.omega1; });
+      x.beta = mean([](const R& q) { return q.beta; });
+      x.e_t = mean([](const R& q) { return q.e_t; });
+      x.rebound_angle_com = mean([](const R& q) { return q.rebound_angle_com; });
+      x.rebound_angle_contact = mean([](const R& q) { return q.rebound_angle_contact; });
+      x.contact_time = mean([](const R& q) { return q.contact_time; });
+      x.dissipated_energy = mean([](const R& q) { return q.dissipated_energy; });
+      x.slip_ratio_out = mean([](const R& q) { return q.slip_ratio_out; });
+    }
+  } else {
+    x = collision::integrate_impact(law, tlaw, S.scheme, S.setup, S.opt);
+  }
+  S.one = x;
+  x.kappa = o.opt.kappa;
+  if (x.mu > 0.0) {
+    x.psi1 = x.kappa * x.slip_ratio_in;
+    x.psi2 = x.kappa * x.slip_ratio_out;
+  }
+  auto& res = run.result;
+  res.ended = x.ended;
+  res.v0 = x.vn0;
+  res.restitution = x.e;
+  res.rebound_velocity = x.vn;
+  res.contact_time = x.contact_time;
+  res.residual_overlap = NAN;
+  res.dissipated_energy = x.dissipated_energy;
+  res.max_overlap = x.max_overlap;
+  res.max_force = x.max_normal_force;
+  res.steps = x.contact_steps;
+  res.dt = x.dt;
+  res.contact_time_estimate = x.contact_time_estimate;
+  if (S.phases == 0 && !x.samples.empty()) {
+    for (const auto& q : x.samples) res.samples.push_back({q.t, q.xi, q.xi_dot, q.fn});
+  }
+  if (o.active) {
+    o.r = x;
+    o.r.residual_overlap = NAN;
+    if (x.ended) {
+      o.rb = collision::rigid_body_prediction(o.bodies, o.impact, std::min(std::max(x.e, 0.0), 1.0), o.mu, o.beta0);
+      o.rb_valid = true;
+    }
+  }
+}
+
 template <class Law, class TLaw>
 void oblique_with(Run& run, Law& law, TLaw& tlaw) {
+  if (run.sch.active) {
+    scheme_with(run, law, tlaw);
+    return;
+  }
   Oblique& o = run.obl;
   o.r = collision::integrate_oblique(law, tlaw, o.bodies, o.impact, o.opt);
   auto& res = run.result;
@@ -783,8 +930,14 @@ void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, doubl
 
 template <class Law>
 void go(Run& run, Law& law, const Bodies& b, double v0, const collision::Options& o) {
-  if (run.obl.active) run_oblique(run, law, o);
-  else run.result = collision::integrate(law, b, v0, o);
+  if (run.obl.active) {
+    run_oblique(run, law, o);
+  } else if (run.sch.active) {
+    collision::Frictionless none;
+    scheme_with(run, law, none);
+  } else {
+    run.result = collision::integrate(law, b, v0, o);
+  }
 }
 
 Run run(Args& a) {
@@ -847,6 +1000,37 @@ Run run(Args& a) {
   opt.record = a.has("--curve");
   if (opt.record) a.str("--curve");
   run.obl = read_oblique(a, b, speed, angle_deg);
+  if (a.has("--scheme")) {
+    SchemeRun& S = run.sch;
+    const std::string name = a.str("--scheme");
+    if (!collision::parse_impact_scheme(name, S.scheme))
+      throw BadInput("option --scheme = '" + name + "' is not one of: " + collision::impact_scheme_names(", "));
+    S.active = true;
+    if (run.analytic) throw BadInput("option --scheme cannot be used with --analytic (no time stepping)");
+    if (!a.has("--wall"))
+      throw BadInput("option --scheme needs --wall (the whole-step integration is a sphere-wall impact)");
+    a.require("--R1", "with --scheme (the sphere starts at z = R1 + gap)");
+    if (run.obl.opt.lever != collision::LeverArm::radius)
+      throw BadInput("option --lever-arm contact_point cannot be used with --scheme (allowed: radius)");
+    S.setup.m = b.m1;
+    S.setup.R = b.R1;
+    S.setup.speed = speed;
+    S.setup.angle = angle_deg * M_PI / 180.0;
+    S.setup.omega0 = run.obl.active ? run.obl.impact.omega1 : 0.0;
+    if (a.has("--gap")) S.setup.gap = a.non_negative("--gap");
+    if (a.has("--phases")) {
+      const double p = a.number("--phases", 1.0, 10000.0, false, false, "[1, 10000]");
+      if (p != std::floor(p)) throw BadInput("option --phases = " + a.str("--phases") + " is not an integer in [1, 10000]");
+      S.phases = static_cast<int>(p);
+      if (a.has("--curve")) throw BadInput("option --curve cannot be used with --phases (one curve per run)");
+    }
+    S.opt.dt = opt.dt;
+    S.opt.steps_per_contact = a.has("--steps") ? opt.steps_per_contact : 1000;
+    S.opt.record = opt.record;
+  } else {
+    for (const char* o : {"--gap", "--phases"})
+      if (a.has(o)) throw BadInput(std::string("option ") + o + " needs --scheme");
+  }
   if (run.analytic) analytic_check_oblique(a, run.obl);
   if (run.obl.active && a.has("--steps")) run.obl.opt.steps_per_contact = opt.steps_per_contact;
 
@@ -1185,6 +1369,61 @@ void write_oblique(Json& j, const Oblique& o) {
   j.close();
 }
 
+void write_scheme(Json& j, const Run& r) {
+  const SchemeRun& S = r.sch;
+  const double deg = 180.0 / M_PI;
+  j.str("scheme", S.scheme.name());
+  j.num("gap", S.setup.gap);
+  j.integer("evaluations_per_step", S.scheme.evaluations());
+  j.integer("history_per_particle", S.scheme.history());
+  j.integer("contact_steps", S.one.contact_steps);
+  j.integer("total_steps", S.one.steps);
+  if (S.phases > 0) {
+    j.integer("phases", S.phases);
+    std::string es = "[";
+    for (size_t i = 0; i < S.pa.runs.size(); ++i) {
+      char buf[40];
+      std::snprintf(buf, sizeof buf, "%s%.17g", i ? ", " : "", S.pa.runs[i].e);
+      es += S.pa.runs[i].ended ? buf : (i ? ", null" : "null");
+    }
+    j.raw("phase_e", es + "]");
+  } else {
+    j.null("phases");
+  }
+  if (!S.have_ref) {
+    j.null("reference");
+    j.null("abs_error");
+    return;
+  }
+  const collision::ImpactResult& x = S.one;
+  j.open("reference");
+  j.str("method", "analytic");
+  j.num("e", S.ref.e);
+  j.num("beta", S.ref.beta);
+  j.num("e_t", S.ref.e_t);
+  j.num("spin_after", S.ref.omega);
+  j.num("rebound_angle_com", S.ref.rebound_angle_com * deg);
+  j.num("rebound_angle_contact", S.ref.rebound_angle_contact * deg);
+  j.close();
+  j.open("abs_error");  // mean over the phases with --phases
+  if (S.phases > 0) {
+    j.num("e", S.pa.e);
+    j.num("beta", S.pa.beta);
+    j.num("e_t", S.pa.e_t);
+    j.num("spin_after", S.pa.omega);
+    j.num("rebound_angle_com", S.pa.rebound_angle_com * deg);
+    j.num("rebound_angle_contact", S.pa.rebound_angle_contact * deg);
+  } else {
+    j.num("e", std::fabs(x.e - S.ref.e));
+    j.num("beta", std::fabs(x.beta - S.ref.beta));
+    j.num("e_t", std::fabs(x.e_t - S.ref.e_t));
+    j.num("spin_after", std::fabs(x.omega1 - S.ref.omega));
+    j.num("rebound_angle_com", std::fabs(x.rebound_angle_com - S.ref.rebound_angle_com) * deg);
+    j.num("rebound_angle_contact", std::fabs(x.rebound_angle_contact - S.ref.rebound_angle_contact) * deg);
+  }
+  j.close();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1260,6 +1499,7 @@ int main(int argc, char** argv) {
   j.close();
   if (!curve.empty()) j.str("curve", curve);
   else j.null("curve");
+  if (r.sch.active) write_scheme(j, r);
   if (r.obl.active) write_oblique(j, r.obl);
   std::fputs(j.done().c_str(), stdout);
   if (res.ended && res.steps < 20 && !r.analytic)

@@ -1,0 +1,608 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: a sphere-wall impact (normal + tangential + spin) integrated in whole steps with any scheme
+// of src/integrators/schemes.h, exactly as a host engine does it, plus four multi-evaluation
+// schemes that only the harness can run (physics_reference.md 5.1, 5.2, 8.6).
+//
+// Set-up. The wall is the plane z = 0, n = +z. The sphere (mass m, radius R, solid unless I is
+// given) starts in free flight at z = R + gap with v = (|v| sin theta, 0, -|v| cos theta) and the
+// scalar spin omega0 about a = -y (signs and result meanings as ObliqueResult of oblique.h:
+// v_s = v_t + R omega, beta = -v_s'/v_s0, e_t = v_t'/v_t0, e = v_n'/v_n0).
+//
+// Forces (the same conventions as integrate_oblique with LeverArm::radius): at every evaluation the
+// overlap is xi = R - z; contact iff xi > 0, or xi = 0 while approaching (a touch start, gap = 0:
+// LAMMPS' wall/gran counts r = R as contact, and so does integrate_oblique). In contact the normal law
+// object of head_on.h gives F_n(xi, xi' = -v_z) (update = true once per step, see below), the
+// tangential law object of oblique.h gives F_t from the slip velocity v_t = tangential part of
+// (v - R w x n); F = F_n n + F_t, torque T = -R n x F_t; a = F/m, alpha = T/I. Out of contact
+// F = T = 0 and both laws are reset (the host erases the contact history on separation).
+//
+// One-evaluation schemes (every Scheme of schemes.h), per step h = dt, the host sequence
+//     predict (initial_integrate) -> force evaluation -> correct (final_integrate)
+// on the translation channel (x, v, a) and the rotation channel (no position, w, alpha). At t = 0
+// the force is evaluated once (the host's set-up, tangential history not advanced; in free flight
+// the force is zero, at a touch start it is the normal law at xi = 0, xi' = v_n0) and
+// integrators::start<S, kPos>(x, v, a, hist, h) fills the histories from that acceleration alone.
+// The tangential law advances its history once per step (update = true, dt = h) with the slip
+// velocity of the evaluated (predicted) state, as a host pair style does.
+//
+// Multi-evaluation schemes (harness only; `F/step` force evaluations per step):
+//   heun       (2) y~ = y + h f(y); y+ = y + h/2 (f(y) + f(y~)); f(y+) for the next step
+//   rk4        (4) classical Runge-Kutta on y = (x, v, w); k1 = f(y_n) is the last evaluation of
+//                  the previous step, stages at h/2, h/2, h, then f(y+)
+//   vv2        (2) x+ = x + h v + h^2 a/2, v_p = v + h a; a_p = a(x+, v_p); v+ = v + h (a + a_p)/2;
+//                  a(x+, v+) for the next step (velocity Verlet with a second evaluation)
+//   abm4_pece  (2) AB4 predictor, evaluation, Adams-Moulton 4 corrector (9, 19, -5, 1)/24, second
+//                  evaluation at the corrected state (PECE); start: constant acceleration
+//                  (a(n-j) = a0, v(n-j) = v0 - j h a0), exact in free flight
+// The last evaluation of a step (at y+) is the only one that commits law histories: the normal
+// law is called with update = true only there, and the tangential history is advanced once, by
+// h times the scheme's quadrature of the stage slip velocities (heun, vv2: trapezoid of the two
+// evaluated states of the step; rk4: (1, 2, 2, 1)/6; abm4_pece: Adams-Moulton (9, 19, -5, 1)/24),
+// then the force at y+ is taken with update = false. An intermediate stage evaluates a copy of the
+// tangential law whose history is advanced as the scheme advances its state to that stage (by
+// c h times the previous stage's slip velocity: RK stage rule; abm4: AB4 combination), never the
+// law itself. Without a tangential dashpot this treats the spring elongation as one more
+// integrated variable of the scheme.
+//
+// End of contact: the first whole step whose (final) evaluation has xi <= 0 after a step with
+// xi > 0. The results are read after that step plus `flush_steps` (default 10) free-flight
+// steps, when the multi-step histories (AB-k: k-1 steps, Gear-q: q-3 steps, ABM4: 3) no longer
+// change v and w. contact_steps counts the steps whose final evaluation had xi > 0;
+// contact_time = contact_steps * dt.
+//
+// phase_averaged(): the start phase of the contact relative to the time grid is varied over P
+// phases, gap = gap0 + phi v_n0 dt with phi = (i + 1/2)/P, and the mean |error| of e, beta, e_t,
+// spin and rebound angles against given reference values is returned (physics_reference 5.2 (B)).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "collision/head_on.h"
+#include "collision/oblique.h"
+#include "integrators/schemes.h"
+
+namespace tdem {
+namespace collision {
+
+// ---------------------------------------------------------------- schemes
+enum class MultiScheme : int { heun, rk4, vv2, abm4_pece, count };
+
+struct MultiSchemeInfo {
+  MultiScheme id;
+  const char* name;
+  int order, order_damped, evaluations, history;  // history: doubles per particle beyond x, v, f, w, torque
+  const char* summary;
+};
+
+inline const MultiSchemeInfo& info(MultiScheme s) {
+  // history: heun keeps y_n (x, v, w) and f_n (a, alpha) through the step = 15; rk4 y_n and the
+  // weighted stage sum = 18; vv2 v_n, w_n, a_n, alpha_n = 12; abm4_pece a(n-1..n-3), alpha(n-1..n-3),
+  // v(n-1..n-3) [27] + x_n, v_n, w_n, a_n, alpha_n [15] = 42 (as abm4 of schemes.h)
+  static const MultiSchemeInfo table[] = {
+      {MultiScheme::heun, "heun", 2, 2, 2, 15, "Heun (RK2), 2 evaluations"},
+      {MultiScheme::rk4, "rk4", 4, 4, 4, 18, "classical Runge-Kutta 4, 4 evaluations"},
+      {MultiScheme::vv2, "vv2", 2, 2, 2, 12, "velocity Verlet, second evaluation at (x+, v+)"},
+      {MultiScheme::abm4_pece, "abm4_pece", 4, 4, 2, 42, "Adams-Bashforth-Moulton 4, PECE"},
+  };
+  return table[static_cast<int>(s)];
+}
+
+// Any scheme of the harness: one of schemes.h or one of the multi-evaluation schemes.
+struct ImpactScheme {
+  bool multi = false;
+  integrators::Scheme one = integrators::Scheme::velocity_verlet;
+  MultiScheme many = MultiScheme::rk4;
+  const char* name() const { return multi ? info(many).name : integrators::info(one).name; }
+  int evaluations() const { return multi ? info(many).evaluations : 1; }
+  int order(bool damped) const {
+    if (multi) return damped ? info(many).order_damped : info(many).order;
+    return damped ? integrators::info(one).order_damped : integrators::info(one).order;
+  }
+  // doubles per particle beyond x, v, f, omega, torque (translation + rotation)
+  int history() const { return multi ? info(many).history : integrators::history_per_particle(one, true); }
+};
+
+inline bool parse_impact_scheme(const std::string& name, ImpactScheme& out) {
+  integrators::Scheme s;
+  if (integrators::parse_scheme(name, s)) {
+    out.multi = false;
+    out.one = s;
+    return true;
+  }
+  for (int i = 0; i < static_cast<int>(MultiScheme::count); ++i)
+    if (name == info(static_cast<MultiScheme>(i)).name) {
+      out.multi = true;
+      out.many = static_cast<MultiScheme>(i);
+      return true;
+    }
+  return false;
+}
+
+inline std::vector<ImpactScheme> all_impact_schemes() {
+  std::vector<ImpactScheme> v;
+  for (int i = 0; i < static_cast<int>(integrators::Scheme::count); ++i) {
+    ImpactScheme s;
+    s.one = static_cast<integrators::Scheme>(i);
+    v.push_back(s);
+  }
+  for (int i = 0; i < static_cast<int>(MultiScheme::count); ++i) {
+    ImpactScheme s;
+    s.multi = true;
+    s.many = static_cast<MultiScheme>(i);
+    v.push_back(s);
+  }
+  return v;
+}
+
+inline std::string impact_scheme_names(const char* sep = "|") {
+  std::string out;
+  for (const auto& s : all_impact_schemes()) out += (out.empty() ? "" : sep) + std::string(s.name());
+  return out;
+}
+
+// ---------------------------------------------------------------- set-up and result
+struct ImpactSetup {
+  double m = 0.0, R = 0.0, I = 0.0;  // I = 0: solid sphere 2/5 m R^2
+  double speed = 0.0;                // |v| [m/s] > 0
+  double angle = 0.0;                // theta from the normal [rad], [0, pi/2)
+  double omega0 = 0.0;               // initial scalar spin [1/s]
+  double gap = 0.0;                  // z(0) - R >= 0 [m]
+};
+
+struct ImpactOptions {
+  double dt = 0.0;                 // fixed step [s]; 0: contact_time_estimate / steps_per_contact
+  long steps_per_contact = 100;
+  int flush_steps = 10;            // free-flight steps after the contact before reading the results
+  bool record = false;             // keep a sample (ObliqueSample) of every evaluation in contact
+  long max_steps = 100000000;      // give up (ended = false)
+  double max_contact_times = 100.0;
+};
+
+struct ImpactResult : ObliqueResult {
+  std::string scheme;
+  double gap = 0.0;
+  long contact_steps = 0;  // steps whose (final) evaluation was in contact
+  long evaluations = 0;    // force evaluations in all
+};
+
+inline void validate(const ImpactSetup& s) {
+  checks::positive("mass m", s.m);
+  checks::positive("radius R", s.R);
+  if (!(s.I >= 0.0) || !std::isfinite(s.I)) checks::fail("moment of inertia I", s.I, "[0, inf) (0: solid sphere)");
+  checks::positive("impact speed |v|", s.speed);
+  if (!(s.angle >= 0.0 && s.angle < 0.5 * M_PI))
+    throw std::domain_error("impact angle theta = " + checks::number(s.angle * 180.0 / M_PI) +
+                            " deg is outside the allowed range [0, 90) deg");
+  if (!std::isfinite(s.omega0)) checks::fail("spin omega0", s.omega0, "(-inf, inf)");
+  if (!(s.gap >= 0.0) || !std::isfinite(s.gap)) checks::fail("gap", s.gap, "[0, inf)");
+}
+
+namespace impact_detail {
+// y = (x[3], v[3], w[3]); f = (v, a, alpha)
+struct Y {
+  double q[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  double* x() { return q; }
+  double* v() { return q + 3; }
+  double* w() { return q + 6; }
+  const double* x() const { return q; }
+  const double* v() const { return q + 3; }
+  const double* w() const { return q + 6; }
+};
+struct Acc {
+  double a[3] = {0, 0, 0}, al[3] = {0, 0, 0}, vt[3] = {0, 0, 0};  // and the slip velocity there
+};
+}  // namespace impact_detail
+
+// ---------------------------------------------------------------- multi-evaluation steps
+// History of abm4_pece (newest first, n-1 .. n-3): accelerations, angular accelerations,
+// velocities (for x) and slip velocities (for the tangential history). Public so that a test can
+// fill it with an exact start-up.
+struct MultiState {
+  double ha[3][3] = {}, hal[3][3] = {}, hv[3][3] = {}, hvt[3][3] = {};
+};
+
+// Start from the acceleration alone (constant acceleration: exact in free flight).
+inline void multi_start(MultiState& st, const impact_detail::Y& y, const impact_detail::Acc& a, double h) {
+  for (int j = 0; j < 3; ++j)
+    for (int k = 0; k < 3; ++k) {
+      st.ha[j][k] = a.a[k];
+      st.hal[j][k] = a.al[k];
+      st.hv[j][k] = y.v()[k] - (j + 1) * h * a.a[k];
+      st.hvt[j][k] = a.vt[k];
+    }
+}
+
+// One step of a multi-evaluation scheme from y (with a0, the evaluation at y) to y+, except the
+// final evaluation at y+ (the caller's, which commits the law histories with h * vt_avg).
+// stage(y_stage, incr_dt, vt_incr, out) evaluates an intermediate stage (a trial: histories
+// advanced by incr_dt * vt_incr on a copy). Returns the number of stage evaluations.
+template <class Stage>
+int multi_step(MultiScheme ms, impact_detail::Y& y, const impact_detail::Acc& a0, MultiState& st, double h,
+               Stage&& stage, double* vt_avg) {
+  using impact_detail::Acc;
+  using impact_detail::Y;
+  const Y y0 = y;
+  auto deriv = [](const Y& yy, const Acc& ac, double* f) {
+    for (int k = 0; k < 3; ++k) {
+      f[k] = yy.v()[k];
+      f[3 + k] = ac.a[k];
+      f[6 + k] = ac.al[k];
+    }
+  };
+  auto axpy = [](const Y& base, double s, const double* f, Y& out) {
+    for (int i = 0; i < 9; ++i) out.q[i] = base.q[i] + s * f[i];
+  };
+  if (ms == MultiScheme::heun) {
+    double f1[9], f2[9];
+    deriv(y0, a0, f1);
+    Y y1;
+    axpy(y0, h, f1, y1);
+    Acc a1;
+    stage(y1, h, a0.vt, a1);
+    deriv(y1, a1, f2);
+    for (int i = 0; i < 9; ++i) y.q[i] = y0.q[i] + 0.5 * h * (f1[i] + f2[i]);
+    for (int k = 0; k < 3; ++k) vt_avg[k] = 0.5 * (a0.vt[k] + a1.vt[k]);
+    return 1;
+  }
+  if (ms == MultiScheme::rk4) {
+    double k1[9], k2[9], k3[9], k4[9];
+    deriv(y0, a0, k1);
+    Y ys;
+    Acc s2, s3, s4;
+    axpy(y0, 0.5 * h, k1, ys);
+    stage(ys, 0.5 * h, a0.vt, s2);
+    deriv(ys, s2, k2);
+    axpy(y0, 0.5 * h, k2, ys);
+    stage(ys, 0.5 * h, s2.vt, s3);
+    deriv(ys, s3, k3);
+    axpy(y0, h, k3, ys);
+    stage(ys, h, s3.vt, s4);
+    deriv(ys, s4, k4);
+    for (int i = 0; i < 9; ++i) y.q[i] = y0.q[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
+    for (int k = 0; k < 3; ++k) vt_avg[k] = (a0.vt[k] + 2.0 * s2.vt[k] + 2.0 * s3.vt[k] + s4.vt[k]) / 6.0;
+    return 3;
+  }
+  if (ms == MultiScheme::vv2) {
+    Y yp = y0;
+    for (int k = 0; k < 3; ++k) {
+      yp.x()[k] = y0.x()[k] + h * y0.v()[k] + 0.5 * h * h * a0.a[k];
+      yp.v()[k] = y0.v()[k] + h * a0.a[k];
+      yp.w()[k] = y0.w()[k] + h * a0.al[k];
+    }
+    Acc ap;
+    stage(yp, h, a0.vt, ap);
+    y = yp;
+    for (int k = 0; k < 3; ++k) {
+      y.v()[k] = y0.v()[k] + 0.5 * h * (a0.a[k] + ap.a[k]);
+      y.w()[k] = y0.w()[k] + 0.5 * h * (a0.al[k] + ap.al[k]);
+      vt_avg[k] = 0.5 * (a0.vt[k] + ap.vt[k]);
+    }
+    return 1;
+  }
+  // abm4_pece
+  auto ab = [](double n0, const double (*hh)[3], int k) {
+    return (55.0 * n0 - 59.0 * hh[0][k] + 37.0 * hh[1][k] - 9.0 * hh[2][k]) / 24.0;
+  };
+  auto am = [](double p, double n0, const double (*hh)[3], int k) {
+    return (9.0 * p + 19.0 * n0 - 5.0 * hh[0][k] + hh[1][k]) / 24.0;
+  };
+  Y yp;
+  double vt_p_incr[3];
+  for (int k = 0; k < 3; ++k) {
+    yp.x()[k] = y0.x()[k] + h * ab(y0.v()[k], st.hv, k);
+    yp.v()[k] = y0.v()[k] + h * ab(a0.a[k], st.ha, k);
+    yp.w()[k] = y0.w()[k] + h * ab(a0.al[k], st.hal, k);
+    vt_p_incr[k] = ab(a0.vt[k], st.hvt, k);
+  }
+  Acc ap;
+  stage(yp, h, vt_p_incr, ap);
+  for (int k = 0; k < 3; ++k) {
+    y.v()[k] = y0.v()[k] + h * am(ap.a[k], a0.a[k], st.ha, k);
+    y.w()[k] = y0.w()[k] + h * am(ap.al[k], a0.al[k], st.hal, k);
+    y.x()[k] = y0.x()[k] + h * am(yp.v()[k], y0.v()[k], st.hv, k);
+    vt_avg[k] = am(ap.vt[k], a0.vt[k], st.hvt, k);
+  }
+  for (int j = 2; j > 0; --j)
+    for (int k = 0; k < 3; ++k) {
+      st.ha[j][k] = st.ha[j - 1][k], st.hal[j][k] = st.hal[j - 1][k], st.hv[j][k] = st.hv[j - 1][k];
+      st.hvt[j][k] = st.hvt[j - 1][k];
+    }
+  for (int k = 0; k < 3; ++k) {
+    st.ha[0][k] = a0.a[k], st.hal[0][k] = a0.al[k], st.hv[0][k] = y0.v()[k], st.hvt[0][k] = a0.vt[k];
+  }
+  return 1;
+}
+
+// ---------------------------------------------------------------- the integrator
+template <class NormalLaw, class TangentialLaw>
+ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const ImpactScheme& scheme,
+                              const ImpactSetup& setup, const ImpactOptions& opt = ImpactOptions()) {
+  using impact_detail::Acc;
+  using impact_detail::Y;
+  validate(setup);
+  if (!(opt.dt >= 0.0) || !std::isfinite(opt.dt)) checks::fail("time step dt", opt.dt, "[0, inf)");
+  if (opt.dt == 0.0 && opt.steps_per_contact < 1) checks::fail("steps per contact", opt.steps_per_contact, "[1, inf)");
+  if (opt.flush_steps < 0) checks::fail("flush steps", opt.flush_steps, "[0, inf)");
+  const double m = setup.m, R = setup.R;
+  const double I = setup.I > 0.0 ? setup.I : rigid_body::solid_sphere_inertia(m, R);
+  normal.reset();
+  tang.reset();
+
+  ImpactResult r;
+  r.scheme = scheme.name();
+  r.gap = setup.gap;
+  r.m_n = m;
+  r.m_t = rigid_body::tangential_mass(m, R, I, INFINITY, INFINITY, INFINITY);
+  r.vn0 = setup.speed * std::cos(setup.angle);
+  r.vt0 = setup.speed * std::sin(setup.angle);
+  r.omega1_0 = setup.omega0;
+  r.vs0 = r.vt0 + R * r.omega1_0;
+  r.impact_angle = std::atan2(r.vt0, r.vn0);
+  r.impact_angle_contact = std::atan2(r.vs0, r.vn0);
+  r.mu = tang.friction();
+  r.contact_time_estimate = normal.contact_time_estimate(m, R, r.vn0);
+  if (opt.dt == 0.0 && (!(r.contact_time_estimate > 0.0) || !std::isfinite(r.contact_time_estimate)))
+    throw std::domain_error("estimated contact time = " + checks::number(r.contact_time_estimate) +
+                            " is not a positive finite number; give a time step dt");
+  const double h = opt.dt > 0.0 ? opt.dt : r.contact_time_estimate / static_cast<double>(opt.steps_per_contact);
+  r.dt = h;
+  const double t_free = setup.gap / r.vn0;
+  const long max_steps =
+      std::min(opt.max_steps, static_cast<long>((t_free + opt.max_contact_times * r.contact_time_estimate) / h) +
+                                  opt.flush_steps + 100);
+
+  // ---- force evaluation at state y. law: the tangential law object to use; incr_dt > 0 first
+  // advances its history by incr_dt * vt_incr (update = true) and then takes the force with
+  // update = false (commit = stage rule); incr_dt < 0: the host rule (one call, update = true,
+  // dt = h, the slip velocity of y). commit_normal: the normal law's update flag.
+  bool in_contact_prev = false;
+  auto geometry = [&](const Y& y, double& xi, double* vt) {
+    xi = R - y.x()[2];
+    // v_rel = v - R w x n, n = z: w x n = (w_y, -w_x, 0)
+    const double* v = y.v();
+    const double* w = y.w();
+    vt[0] = v[0] - R * w[1];
+    vt[1] = v[1] + R * w[0];
+    vt[2] = 0.0;
+  };
+  struct Last {
+    double xi = 0.0, xi_dot = 0.0, fn = 0.0, ft_t = 0.0, vs_t = 0.0;
+    bool sliding = false, contact = false;
+  } last;
+  auto evaluate = [&](const Y& y, TangentialLaw& law, double incr_dt, const double* vt_incr, bool commit_normal,
+                      Acc& out) {
+    double xi;
+    geometry(y, xi, out.vt);
+    for (int k = 0; k < 3; ++k) out.a[k] = out.al[k] = 0.0;
+    const double xi_dot = -y.v()[2];
+    last.contact = xi > 0.0 || (xi == 0.0 && xi_dot > 0.0);
+    if (!last.contact) {
+      last.xi = xi, last.xi_dot = -y.v()[2], last.fn = 0.0, last.ft_t = 0.0, last.vs_t = out.vt[0];
+      last.sliding = false;
+      return false;
+    }
+    const NormalResult<double> nr = normal.force(xi, xi_dot, m, R, commit_normal);
+    TangentialKin k;
+    k.n[0] = 0.0, k.n[1] = 0.0, k.n[2] = 1.0;
+    for (int i = 0; i < 3; ++i) k.vt[i] = out.vt[i];
+    k.spin_n = 0.5 * y.w()[2];
+    k.dt = h;
+    k.overlap = xi;
+    k.meff = m;
+    k.reff = R;
+    k.fn = nr.force;
+    k.kn = nr.stiffness;
+    k.gamman = nr.damping;
+    double ft[3] = {0.0, 0.0, 0.0};
+    bool sliding;
+    if (incr_dt < 0.0) {
+      sliding = law.force(k, true, ft);
+    } else {
+      if (incr_dt > 0.0) {
+        TangentialKin ki = k;
+        for (int i = 0; i < 3; ++i) ki.vt[i] = vt_incr[i];
+        ki.dt = incr_dt;
+        double dummy[3];
+        law.force(ki, true, dummy);
+      }
+      sliding = law.force(k, false, ft);
+    }
+    // F = F_n n + F_t; torque -R n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
+    out.a[0] = ft[0] / m;
+    out.a[1] = ft[1] / m;
+    out.a[2] = (nr.force + ft[2]) / m;
+    out.al[0] = R * ft[1] / I;
+    out.al[1] = -R * ft[0] / I;
+    out.al[2] = 0.0;
+    last.xi = xi, last.xi_dot = xi_dot, last.fn = nr.force, last.ft_t = ft[0], last.vs_t = out.vt[0];
+    last.sliding = sliding;
+    return true;
+  };
+  // After the final evaluation of a step: bookkeeping, reset on separation. Returns true when the
+  // run is over.
+  long flush_left = -1;
+  bool switched_state = false;
+  auto record_sample = [&](double t) {
+    if (opt.record) r.samples.push_back({t, last.xi, last.xi_dot, last.fn, last.ft_t, last.vs_t, last.sliding});
+  };
+  auto after_step = [&]() {
+    ++r.steps;
+    if (last.contact) record_sample(r.steps * h);
+    if (last.contact) {
+      if (!in_contact_prev && r.contact_steps == 0) {
+        r.sliding_at_start = last.sliding;
+        switched_state = last.sliding;
+      } else if (last.sliding != switched_state) {
+        switched_state = last.sliding;
+        if (static_cast<int>(r.switches.size()) < 1000) r.switches.push_back({r.steps * h, last.sliding});
+        ++r.n_switches;
+      }
+      ++r.contact_steps;
+      r.max_overlap = std::max(r.max_overlap, last.xi);
+      r.max_normal_force = std::max(r.max_normal_force, last.fn);
+      r.max_tangential_force = std::max(r.max_tangential_force, std::fabs(last.ft_t));
+    } else {
+      if (in_contact_prev) {  // separation
+        normal.reset();
+        tang.reset();
+        if (flush_left < 0) flush_left = opt.flush_steps;
+      }
+    }
+    in_contact_prev = last.contact;
+    if (flush_left >= 0) {
+      if (flush_left == 0) return true;
+      --flush_left;
+    }
+    return false;
+  };
+
+  Y y;
+  y.x()[2] = R + setup.gap;
+  y.v()[0] = r.vt0;
+  y.v()[2] = -r.vn0;
+  y.w()[1] = -setup.omega0;  // omega . a with a = -y
+  const double ke0 = 0.5 * m * (r.vt0 * r.vt0 + r.vn0 * r.vn0) + 0.5 * I * setup.omega0 * setup.omega0;
+
+  // t = 0: the set-up evaluation (the host's: the tangential history is not advanced; the normal
+  // law commits, so that the extended laws take v0 at a touch start; counts as an evaluation)
+  Acc acc;
+  evaluate(y, tang, 0.0, nullptr, true, acc);
+  in_contact_prev = last.contact;
+  if (last.contact) {
+    r.sliding_at_start = switched_state = last.sliding;
+    record_sample(0.0);
+  }
+  r.evaluations = 1;
+  bool done = false;
+  bool finite = true;
+
+  if (!scheme.multi) {
+    integrators::dispatch(scheme.one, [&](auto tag) {
+      constexpr integrators::Scheme S = decltype(tag)::value;
+      using KT = integrators::Kernel<S, true>;
+      using KR = integrators::Kernel<S, false>;
+      double ht[KT::history > 0 ? KT::history : 1] = {0.0};
+      double hr[KR::history > 0 ? KR::history : 1] = {0.0};
+      integrators::start<S, true>(y.x(), y.v(), acc.a, ht, h);
+      integrators::start<S, false>(nullptr, y.w(), acc.al, hr, h);
+      while (!done && r.steps < max_steps) {
+        KT::predict(y.x(), y.v(), acc.a, ht, h);
+        KR::predict(nullptr, y.w(), acc.al, hr, h);
+        evaluate(y, tang, -1.0, nullptr, true, acc);
+        ++r.evaluations;
+        KT::correct(y.x(), y.v(), acc.a, ht, h);
+        KR::correct(nullptr, y.w(), acc.al, hr, h);
+        if (!std::isfinite(y.v()[2]) || !std::isfinite(y.x()[2])) {
+          finite = false;
+          break;
+        }
+        done = after_step();
+      }
+      return 0;
+    });
+  } else {
+    MultiState st;
+    multi_start(st, y, acc, h);
+    while (!done && r.steps < max_steps) {
+      double vt_avg[3];
+      r.evaluations += multi_step(scheme.many, y, acc, st, h, [&](const Y& ys, double incr_dt, const double* vt_incr, Acc& out) {
+        TangentialLaw trial = tang;
+        evaluate(ys, trial, incr_dt, vt_incr, false, out);
+      }, vt_avg);
+      // the final evaluation of the step: commits the histories
+      evaluate(y, tang, h, vt_avg, true, acc);
+      ++r.evaluations;
+      if (!std::isfinite(y.v()[2]) || !std::isfinite(y.x()[2])) {
+        finite = false;
+        break;
+      }
+      done = after_step();
+    }
+  }
+  if (!done || !finite) return r;
+
+  r.ended = true;
+  r.contact_time = r.contact_steps * h;
+  r.vn = y.v()[2];
+  r.vt = y.v()[0];
+  r.omega1 = -y.w()[1];
+  r.omega2 = 0.0;
+  r.vs = r.vt + R * r.omega1;
+  r.residual_overlap = 0.0;
+  const double ke1 = 0.5 * m * (y.v()[0] * y.v()[0] + y.v()[1] * y.v()[1] + y.v()[2] * y.v()[2]) +
+                     0.5 * I * (y.w()[0] * y.w()[0] + y.w()[1] * y.w()[1] + y.w()[2] * y.w()[2]);
+  r.dissipated_energy = ke0 - ke1;
+  r.e = r.vn / r.vn0;
+  r.beta = r.vs0 != 0.0 ? -r.vs / r.vs0 : NAN;
+  r.e_t = r.vt0 != 0.0 ? r.vt / r.vt0 : NAN;
+  r.rebound_angle_com = std::atan2(r.vt, r.vn);
+  r.rebound_angle_contact = std::atan2(r.vs, r.vn);
+  if (r.mu > 0.0) {
+    r.slip_ratio_in = r.vs0 / (r.mu * r.vn0);
+    r.slip_ratio_out = r.vs / (r.mu * r.vn0);
+  }
+  return r;
+}
+
+// ---------------------------------------------------------------- phase averaging
+// Reference values (NaN: not compared).
+struct ImpactReference {
+  double e = NAN, beta = NAN, e_t = NAN, omega = NAN;               // omega: spin after [1/s]
+  double rebound_angle_com = NAN, rebound_angle_contact = NAN;      // [rad]
+};
+
+struct PhaseAverage {
+  int phases = 0;
+  int ended = 0;  // runs whose contact ended
+  // mean |result - reference| over the phases (NaN where the reference is NaN or a run did not end)
+  double e = NAN, beta = NAN, e_t = NAN, omega = NAN, rebound_angle_com = NAN, rebound_angle_contact = NAN;
+  double mean_e = NAN;  // mean e itself
+  double contact_steps = 0.0;  // mean
+  double dt = 0.0;
+  std::vector<ImpactResult> runs;
+};
+
+template <class NormalLaw, class TangentialLaw>
+PhaseAverage phase_averaged(NormalLaw& normal, TangentialLaw& tang, const ImpactScheme& scheme,
+                            const ImpactSetup& setup, const ImpactOptions& opt, int phases,
+                            const ImpactReference& ref, bool keep_runs = false) {
+  if (phases < 1) checks::fail("phases", phases, "[1, inf)");
+  validate(setup);
+  const double vn0 = setup.speed * std::cos(setup.angle);
+  double dt = opt.dt;
+  if (!(dt > 0.0)) dt = normal.contact_time_estimate(setup.m, setup.R, vn0) / static_cast<double>(opt.steps_per_contact);
+  ImpactOptions o = opt;
+  o.dt = dt;
+  PhaseAverage pa;
+  pa.phases = phases;
+  pa.dt = dt;
+  double s[6] = {0, 0, 0, 0, 0, 0}, se = 0.0, sc = 0.0;
+  const double* refs[6] = {&ref.e, &ref.beta, &ref.e_t, &ref.omega, &ref.rebound_angle_com, &ref.rebound_angle_contact};
+  for (int i = 0; i < phases; ++i) {
+    ImpactSetup su = setup;
+    su.gap = setup.gap + (i + 0.5) / phases * vn0 * dt;
+    ImpactResult res = integrate_impact(normal, tang, scheme, su, o);
+    if (res.ended) {
+      ++pa.ended;
+      const double got[6] = {res.e, res.beta, res.e_t, res.omega1, res.rebound_angle_com, res.rebound_angle_contact};
+      for (int k = 0; k < 6; ++k) s[k] += std::fabs(got[k] - *refs[k]);
+      se += res.e;
+      sc += static_cast<double>(res.contact_steps);
+    }
+    if (keep_runs) pa.runs.push_back(std::move(res));
+  }
+  if (pa.ended == phases) {
+    double* outs[6] = {&pa.e, &pa.beta, &pa.e_t, &pa.omega, &pa.rebound_angle_com, &pa.rebound_angle_contact};
+    for (int k = 0; k < 6; ++k) *outs[k] = s[k] / phases;  // NaN reference -> NaN
+    pa.mean_e = se / phases;
+    pa.contact_steps = sc / phases;
+  }
+  return pa;
+}
+
+}  // namespace collision
+}  // namespace tdem

@@ -1,0 +1,245 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""Table and plots of the integrator study (validation/integrators/run.sh).
+
+Reads results/errors.csv (study.cpp) and, if present, results/cost_lammps.csv and
+results/cost_liggghts.csv (columns scheme,ratio_to_nve_sphere,history_doubles: measured host cost per
+particle-step relative to fix nve/sphere). Writes results/table.md, results/errors_vs_N.png and
+results/pareto.png.
+
+Cost per contact = N x (force evaluations per step) x (host cost ratio per particle-step; 1.0 where
+no host measurement exists, marked in the table). Observed orders: the slope of log|error| against
+log N, between N = 20 and 80 (the physics_reference 5.2 convention) and a least-squares fit over
+N = 40 ... 320."""
+import csv
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+here = os.path.dirname(os.path.abspath(__file__))
+res = os.path.join(here, "results")
+rows = list(csv.DictReader(open(os.path.join(res, "errors.csv"))))
+
+
+def val(r, k):
+    return float(r[k]) if r[k] not in ("", "nan") else math.nan
+
+
+schemes = []
+for r in rows:
+    if r["scheme"] not in schemes:
+        schemes.append(r["scheme"])
+MULTI = ("heun", "rk4", "vv2", "abm4_pece")
+info = {r["scheme"]: (int(r["evaluations_per_step"]), int(r["history_doubles"])) for r in rows}
+BASE_DOUBLES = 15  # x, v, f, omega, torque
+
+
+def series(case, grid, key):
+    d = {}
+    for r in rows:
+        if r["case"] == case and r["grid"] == grid:
+            d.setdefault(r["scheme"], []).append((int(r["N"]), val(r, key)))
+    return {s: sorted(v) for s, v in d.items()}
+
+
+def err_at(case, grid, key, scheme, n):
+    for N, e in series(case, grid, key).get(scheme, []):
+        if N == n:
+            return e
+    return math.nan
+
+
+def order_pair(case, grid, key, scheme, n1, n2):
+    e1, e2 = err_at(case, grid, key, scheme, n1), err_at(case, grid, key, scheme, n2)
+    if not (e1 > 0 and e2 > 0):
+        return math.nan
+    return math.log(e1 / e2) / math.log(n2 / n1)
+
+
+def order_fit(case, grid, key, scheme, nmin=40, nmax=320):
+    pts = [(math.log(N), math.log(e)) for N, e in series(case, grid, key).get(scheme, [])
+           if nmin <= N <= nmax and e > 0]
+    if len(pts) < 2:
+        return math.nan
+    mx = sum(p[0] for p in pts) / len(pts)
+    my = sum(p[1] for p in pts) / len(pts)
+    sxx = sum((p[0] - mx) ** 2 for p in pts)
+    sxy = sum((p[0] - mx) * (p[1] - my) for p in pts)
+    return -sxy / sxx
+
+
+# ---- host cost ratios
+cost = {}
+cost_src = {}
+for host in ("lammps", "liggghts"):
+    p = os.path.join(res, f"cost_{host}.csv")
+    if os.path.exists(p):
+        for r in csv.DictReader(open(p)):
+            try:
+                cost.setdefault(r["scheme"], {})[host] = float(r["ratio_to_nve_sphere"])
+            except (KeyError, ValueError):
+                pass
+        cost_src[host] = p
+measured_hosts = sorted(cost_src)
+
+
+def ratio(s):
+    """Host cost ratio per particle-step (mean over the hosts that measured it), 1.0 if none."""
+    v = [cost[s][h] for h in measured_hosts if s in cost and h in cost[s]]
+    return (sum(v) / len(v), True) if v else (1.0, False)
+
+
+def cost_per_contact(s, n):
+    return n * info[s][0] * ratio(s)[0]
+
+
+def cost_for(case, grid, key, s, target):
+    """Cost per contact at which |error| reaches target (log-log interpolation in N), NaN if never
+    within N = 10 ... 320."""
+    pts = [(N, e) for N, e in series(case, grid, key).get(s, []) if e > 0]
+    for (n1, e1), (n2, e2) in zip(pts, pts[1:]):
+        if e1 <= target:
+            return cost_per_contact(s, n1)
+        if e2 <= target < e1:
+            t = math.log(e1 / target) / math.log(e1 / e2)
+            n = math.exp(math.log(n1) + t * math.log(n2 / n1))
+            return cost_per_contact(s, n)
+    return math.nan
+
+
+def fmt(x, spec=".1e"):
+    return "-" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, spec)
+
+
+# ---- plots
+palette = [plt.cm.tab20(i) for i in range(20)] + [plt.cm.tab20b(i) for i in range(0, 20, 4)]
+colors = {s: palette[i % len(palette)] for i, s in enumerate(schemes)}
+styles = {s: ("--" if s in MULTI else "-") for s in schemes}
+panels = [("headon_52", "integer", "err_e", "|Δe|, 5.2 head-on, dt = t_c/N (integer N)"),
+          ("headon_52", "generic", "err_e", "|Δe|, 5.2 head-on, generic dt"),
+          ("oblique_25", "generic", "err_e", "|Δe|, 8.5 oblique 25°, generic dt"),
+          ("oblique_25", "generic", "err_beta", "|Δβ|, 8.5 oblique 25°, generic dt"),
+          ("oblique_5", "generic", "err_beta", "|Δβ|, 8.5 oblique 5° (stick), generic dt"),
+          ("oblique_25", "generic", "err_rebound_contact_deg", "|Δ rebound angle (contact point)| [deg], 25°"),
+          ("headon_hertz_tsuji", "generic", "err_e", "|Δe|, Hertz + Tsuji α = 0.2 head-on, generic dt"),
+          ("headon_hertz_tsuji", "integer", "err_e", "|Δe|, Hertz + Tsuji, dt = t_c/N (integer N)"),
+          ("oblique_60", "generic", "err_beta", "|Δβ|, 8.5 oblique 60° (gross slip), generic dt")]
+fig, axs = plt.subplots(3, 3, figsize=(17, 15))
+for ax, (case, grid, key, title) in zip(axs.flat, panels):
+    for s, pts in series(case, grid, key).items():
+        pts = [(n, e) for n, e in pts if e > 0]
+        if pts:
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], styles[s], marker="o", ms=3, color=colors[s], label=s)
+    for p, ls in ((1, ":"), (2, "-.")):
+        ax.loglog([10, 320], [1e-2 * (10 / 10) ** -p, 1e-2 * (320 / 10) ** -p], ls, color="grey", lw=0.8)
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel("steps per contact N")
+    ax.grid(True, which="both", alpha=0.3)
+axs.flat[0].legend(fontsize=6, ncol=2)
+fig.suptitle("Phase-averaged errors against the closed form (collision/analytic.h); dashed: multi-evaluation "
+             "schemes; grey: slopes 1 and 2", fontsize=10)
+fig.tight_layout()
+fig.savefig(os.path.join(res, "errors_vs_N.png"), dpi=110)
+plt.close(fig)
+
+pareto_panels = [("headon_52", "generic", "err_e", "|Δe|, 5.2 head-on, generic dt"),
+                 ("headon_hertz_tsuji", "generic", "err_e", "|Δe|, Hertz + Tsuji head-on, generic dt"),
+                 ("oblique_25", "generic", "err_beta", "|Δβ|, 8.5 oblique 25°, generic dt"),
+                 ("headon_52", "integer", "err_e", "|Δe|, 5.2 head-on, dt = t_c/N (integer N)")]
+fig, axs = plt.subplots(2, 2, figsize=(15, 12))
+axs = list(axs.flat)
+fronts = {}
+for ax, (case, grid, key, title) in zip(axs, pareto_panels):
+    allpts = []
+    for s, pts in series(case, grid, key).items():
+        xs = [(cost_per_contact(s, n), e) for n, e in pts if e > 0]
+        allpts += [(c, e, s) for c, e in xs]
+        ax.loglog([p[0] for p in xs], [p[1] for p in xs], styles[s], marker="o", ms=3, color=colors[s], label=s)
+    allpts.sort()
+    front, best = [], math.inf
+    for c, e, s in allpts:
+        if e < best:
+            front.append((c, e, s))
+            best = e
+    fronts[(case, grid, key)] = front
+    ax.loglog([p[0] for p in front], [p[1] for p in front], "k-", lw=2.5, alpha=0.35, label="Pareto front")
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel("cost per contact = N × F/step × host ratio" + ("" if measured_hosts else " (ratio 1.0)"))
+    ax.set_ylabel("phase-averaged |error|")
+    ax.grid(True, which="both", alpha=0.3)
+axs[0].legend(fontsize=6, ncol=2)
+fig.tight_layout()
+fig.savefig(os.path.join(res, "pareto.png"), dpi=110)
+plt.close(fig)
+
+# ---- table
+L = []
+L.append("# Integrator study: error against the closed form vs steps per contact, and cost\n")
+L.append("Generated by `validation/integrators/run.sh` (study.cpp + analyse.py) from `errors.csv`. "
+         "Errors are phase-averaged (16 start phases of the contact on the time grid) |result − closed form| "
+         "(collision/analytic.h). *integer*: dt = t_c/N exactly (the physics_reference 5.2 convention); "
+         "*generic*: dt = t_c/(N + f), mean over f = 1/8, 3/8, 5/8, 7/8. Cases: `headon_52` = 5.2 test "
+         "(m = 0.01 kg, k = 1e5 N/m, γ = 4.48097 kg/s, variant A, frictionless); `oblique_θ` = 8.5(a) "
+         "(LSD e = 0.98, t_n = 1e-5 s, zero-force end, Cundall–Strack κ = 2/7, μ = 0.092, |v| = 3.9 m/s); "
+         "`headon_hertz_tsuji` = Hertz + Tsuji damping α = 0.2 (8.2 steel sphere, 1 m/s; reference: "
+         "head_on.h RK4 with the located end, 160000 steps).\n")
+if measured_hosts:
+    L.append("Host cost ratio per particle-step (to `nve/sphere`) from " +
+             ", ".join(f"`results/cost_{h}.csv`" for h in measured_hosts) +
+             " (mean of the hosts); schemes without a measurement use 1.0 (marked *).\n")
+else:
+    L.append("**No host cost measurement found** (`results/cost_lammps.csv`, `results/cost_liggghts.csv`): "
+             "the host cost ratio is taken as 1.0 for every scheme, so cost = N × force evaluations per step.\n")
+L.append("Memory per particle = 15 doubles (x, v, f, ω, torque) + the scheme's history (translation + "
+         "rotation; multi-evaluation schemes: what must be kept through a step).\n")
+L.append("| scheme | F/step | history | memory [doubles] | host ratio | \\|Δe\\| 5.2 int. N=20 | N=80 | order 20→80 "
+         "| \\|Δe\\| 5.2 generic N=20 | N=80 | order (fit 40–320) | \\|Δβ\\| 25° gen. N=80 | order | "
+         "\\|Δ rebound\\| 25° N=80 [deg] | order | \\|Δe\\| Hertz–Tsuji gen. N=80 | order | "
+         "cost for \\|Δe\\| ≤ 1e-3 (generic) | cost for \\|Δβ\\| ≤ 2e-4 (25°) |")
+L.append("|" + "---|" * 19)
+for s in schemes:
+    ev, hist = info[s]
+    rt, measured = ratio(s)
+    L.append("| " + " | ".join([
+        s, str(ev), str(hist), str(BASE_DOUBLES + hist), f"{rt:.2f}" + ("" if measured else "*"),
+        fmt(err_at("headon_52", "integer", "err_e", s, 20)), fmt(err_at("headon_52", "integer", "err_e", s, 80)),
+        fmt(order_pair("headon_52", "integer", "err_e", s, 20, 80), ".2f"),
+        fmt(err_at("headon_52", "generic", "err_e", s, 20)), fmt(err_at("headon_52", "generic", "err_e", s, 80)),
+        fmt(order_fit("headon_52", "generic", "err_e", s), ".2f"),
+        fmt(err_at("oblique_25", "generic", "err_beta", s, 80)),
+        fmt(order_fit("oblique_25", "generic", "err_beta", s), ".2f"),
+        fmt(err_at("oblique_25", "generic", "err_rebound_contact_deg", s, 80)),
+        fmt(order_fit("oblique_25", "generic", "err_rebound_contact_deg", s), ".2f"),
+        fmt(err_at("headon_hertz_tsuji", "generic", "err_e", s, 80)),
+        fmt(order_fit("headon_hertz_tsuji", "generic", "err_e", s), ".2f"),
+        fmt(cost_for("headon_52", "generic", "err_e", s, 1e-3), ".0f"),
+        fmt(cost_for("oblique_25", "generic", "err_beta", s, 2e-4), ".0f")]) + " |")
+L.append("")
+L.append("## Cheapest scheme per accuracy (cost per contact, log-log interpolation in N = 10 … 320)\n")
+L.append("| target | cheapest (cost) | next (cost) | velocity_verlet (= nve/sphere) cost |")
+L.append("|---|---|---|---|")
+targets = [("headon_52", "generic", "err_e", t, f"\\|Δe\\| ≤ {t:g}, generic dt") for t in (1e-2, 1e-3, 1e-4)]
+targets += [("oblique_25", "generic", "err_beta", t, f"\\|Δβ\\| ≤ {t:g} (25°), generic dt") for t in (1e-3, 2e-4)]
+targets += [("headon_hertz_tsuji", "generic", "err_e", t, f"\\|Δe\\| ≤ {t:g} (Hertz–Tsuji), generic dt")
+            for t in (1e-3, 1e-4)]
+targets += [("headon_52", "integer", "err_e", t, f"\\|Δe\\| ≤ {t:g}, dt = t_c/N") for t in (1e-3, 1e-5)]
+for case, grid, key, t, label in targets:
+    c = sorted((cost_for(case, grid, key, s, t), s) for s in schemes)
+    c = [x for x in c if not math.isnan(x[0])]
+    vv = cost_for(case, grid, key, "velocity_verlet", t)
+    first = f"{c[0][1]} ({c[0][0]:.0f})" if c else "none within N ≤ 320"
+    second = f"{c[1][1]} ({c[1][0]:.0f})" if len(c) > 1 else "-"
+    L.append(f"| {label} | {first} | {second} | {fmt(vv, '.0f')} |")
+L.append("")
+L.append("## Pareto fronts (scheme at N on the front, generic dt)\n")
+for (case, grid, key), front in fronts.items():
+    L.append(f"- {case} {key} ({grid}): " + ", ".join(f"{s} ({c:.0f}: {e:.1e})" for c, e, s in front))
+L.append("")
+L.append("Plots: `errors_vs_N.png` (errors against N), `pareto.png` (error against cost per contact).")
+open(os.path.join(res, "table.md"), "w").write("\n".join(L) + "\n")
+print("\n".join(L))
