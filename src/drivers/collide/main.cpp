@@ -150,10 +150,11 @@ Integration and output:
                           the closed form exists (lsd, tangential none or cundall_strack without
                           --gammat), the mean |error| against it
   --analytic              closed-form solution instead of the integrator (collision/analytic.h):
-                          only a sphere-wall impact (--wall), --law lsd (any parameter form, either
-                          --end) and --tangential none or cundall_strack without --gammat, lever arm
-                          radius; not with --curve, --steps or --dt. "method": "analytic"; steps = 0,
-                          dt and max_tangential_force null
+                          a sphere on a wall or two spheres (contact frame fixed: the turning of the
+                          line of centres is neglected), --law lsd (any parameter form, either
+                          --end) and --tangential none or cundall_strack (with or without --gammat),
+                          lever arm radius; not with --curve, --steps or --dt. "method": "analytic";
+                          steps = 0, dt and max_tangential_force null
   --help                  this text
 
 Output: JSON on stdout with law, method (integrated|analytic), end, parameters, m_eff, r_eff, v0, e, contact_time,
@@ -566,7 +567,7 @@ double constant_normal_stiffness(const Run& run) {
   return NAN;
 }
 
-// The closed-form reference of integrate_impact (lsd with the Cundall-Strack spring without dashpot
+// The closed-form reference of integrate_impact (lsd with the Cundall-Strack spring, with or without dashpot,
 // or frictionless): sets run.sch.ref.
 template <class Law, class TLaw>
 void scheme_reference(Run& run, const Law& law, const TLaw& tlaw) {
@@ -585,8 +586,9 @@ void scheme_reference(Run& run, const Law& law, const TLaw& tlaw) {
     in.vt0 = S.setup.speed * std::sin(S.setup.angle);
     in.omega0 = S.setup.omega0;
     if constexpr (std::is_same_v<TLaw, collision::CundallStrackTangential>) {
-      if (tlaw.p.gammat != 0.0) return;
       in.kt = tlaw.p.kt;
+      in.gt = tlaw.p.gammat;
+      in.rule = tlaw.rule;
       in.mu = tlaw.p.mu;
       in.limit = tlaw.limit;
     } else {
@@ -798,9 +800,9 @@ void run_oblique(Run& run, Law& law, const collision::Options& ho) {
 
 // ------------------------------------------------ --analytic
 constexpr const char* kAnalyticSupports =
-    "--analytic supports a sphere-wall impact (--wall) with --law lsd (--k/--gamma, --e with --k or --tc, "
-    "either --end) and --tangential none or cundall_strack (--mu, --kt or --kappa, --friction-limit, "
-    "no --gammat), lever arm radius, no --curve/--steps/--dt";
+    "--analytic supports a sphere-wall (--wall) or two-sphere impact with --law lsd (--k/--gamma, --e with --k "
+    "or --tc, either --end) and --tangential none or cundall_strack (--mu, --kt or --kappa, --gammat, "
+    "--friction-limit), lever arm radius, no --curve/--steps/--dt";
 
 // Refuses what the closed form cannot do (before the laws read their options).
 void analytic_check_start(Args& a, const std::string& law) {
@@ -810,32 +812,33 @@ void analytic_check_start(Args& a, const std::string& law) {
     if (a.has(opt))
       throw BadInput(std::string("option ") + opt + " cannot be used with --analytic (no time stepping; " +
                      kAnalyticSupports + ")");
-  if (!a.has("--wall"))
-    throw BadInput(std::string("option --analytic needs --wall: two spheres are not supported (") +
-                   kAnalyticSupports + ")");
 }
 
 void analytic_check_oblique(Args& a, const Oblique& o) {
   if (o.tangential != "none" && o.tangential != "cundall_strack")
     throw BadInput("option --analytic does not support --tangential " + o.tangential + " (" + kAnalyticSupports +
                    ")");
-  if (o.gammat != 0.0)
-    throw BadInput("option --gammat = " + a.str("--gammat") +
-                   " cannot be used with --analytic (tangential damping: the closed form needs --gammat 0; " +
-                   kAnalyticSupports + ")");
   if (o.opt.lever != collision::LeverArm::radius)
     throw BadInput(std::string("option --lever-arm contact_point cannot be used with --analytic (") +
                    kAnalyticSupports + ")");
 }
 
-// The closed-form sphere-wall impact (lsd normal law, Cundall-Strack spring or frictionless).
+// The closed-form impact on a wall or of two spheres (lsd normal law, Cundall-Strack spring with
+// or without a dashpot, or frictionless).
 void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, double v0) {
   Oblique& o = run.obl;
   namespace an = collision::analytic;
+  const bool wall = std::isinf(b.m2);
   an::Input in;
   in.m = b.m1;
   in.R = b.R1 > 0.0 ? b.R1 : 1.0;  // head-on without a radius: the lever arm plays no role
   in.I = 0.0;                      // solid sphere, as the integrator
+  if (!wall) {
+    in.m2 = b.m2;
+    in.R2 = std::isfinite(b.R2) && b.R2 > 0.0 ? b.R2 : 1.0;  // idem
+    in.I2 = 0.0;
+    in.omega2 = o.active ? o.impact.omega2 : 0.0;
+  }
   in.kn = law.c.k;
   in.gn = law.c.gamma;
   in.end = law.end_mode;
@@ -845,9 +848,11 @@ void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, doubl
   if (friction) {
     kt = std::isnan(o.kt) ? o.kappa * law.c.k : o.kt;
     in.kt = kt;
+    in.gt = o.gammat;
+    in.rule = cundall_strack::SlipRule::spring_cap;  // as CundallStrackTangential in run_oblique
     in.mu = o.mu;
     in.limit = o.limit;
-    o.tparams = {{"kt", kt}, {"gammat", 0.0}, {"mu", o.mu}};
+    o.tparams = {{"kt", kt}, {"gammat", o.gammat}, {"mu", o.mu}};
     o.tchoices = {{"friction_limit", tangential::to_string(o.limit)}, {"slip_rule", "spring"}};
     if (std::isnan(kappa)) kappa = std::isnan(o.kappa) ? kt / law.c.k : o.kappa;
   } else {
@@ -859,15 +864,20 @@ void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, doubl
   in.omega0 = o.active ? o.impact.omega1 : 0.0;
   const an::Output x = an::impact(in);
   const an::Normal nrm = an::make_normal(in);
-  const double I = 0.4 * in.m * in.R * in.R;
+  const double I = an::inertia1(in), I2 = an::inertia2(in);
 
   // normal closed forms: largest overlap (xi' = 0) and force (F' = 0, or F(0) = gamma v0)
   const double t_xmax = std::atan2(nrm.w, nrm.delta) / nrm.w;
   const double A = (nrm.k - nrm.g * nrm.delta) / nrm.w;
   double t_fmax = std::atan2(nrm.w * A - nrm.delta * nrm.g, nrm.delta * A + nrm.w * nrm.g) / nrm.w;
   t_fmax = std::min(std::max(t_fmax, 0.0), nrm.t_end);
-  const double ke0 = 0.5 * in.m * (in.vn0 * in.vn0 + in.vt0 * in.vt0) + 0.5 * I * in.omega0 * in.omega0;
-  const double ke1 = 0.5 * in.m * (x.vn * x.vn + x.vt * x.vt) + 0.5 * I * x.omega * x.omega;
+  // sphere 2 at rest before (v2n0 = v2t0 = 0), as in integrate_oblique
+  double ke0 = 0.5 * in.m * (in.vn0 * in.vn0 + in.vt0 * in.vt0) + 0.5 * I * in.omega0 * in.omega0;
+  double ke1 = 0.5 * in.m * (x.v1n * x.v1n + x.v1t * x.v1t) + 0.5 * I * x.omega * x.omega;
+  if (!wall) {
+    ke0 += 0.5 * I2 * in.omega2 * in.omega2;
+    ke1 += 0.5 * in.m2 * (x.v2n * x.v2n + x.v2t * x.v2t) + 0.5 * I2 * x.omega2 * x.omega2;
+  }
 
   auto& res = run.result;
   res.ended = true;
@@ -890,6 +900,7 @@ void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, doubl
   r.vt0 = in.vt0;
   r.vs0 = x.vs0;
   r.omega1_0 = in.omega0;
+  r.omega2_0 = in.omega2;
   r.impact_angle = std::atan2(r.vt0, r.vn0);
   r.impact_angle_contact = std::atan2(r.vs0, r.vn0);
   r.e = x.e;
@@ -897,7 +908,8 @@ void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, doubl
   r.vt = x.vt;
   r.vs = x.vs;
   r.omega1 = x.omega;
-  r.omega2 = 0.0;
+  r.omega2 = x.omega2;
+  r.normal_turn = 0.0;  // the closed form keeps the contact frame fixed
   r.beta = x.beta;
   r.e_t = x.e_t;
   r.rebound_angle_com = x.rebound_angle_com;
@@ -916,7 +928,7 @@ void run_analytic(Run& run, const collision::LsdLaw& law, const Bodies& b, doubl
   r.max_tangential_force = NAN;  // not evaluated by the closed form
   r.residual_overlap = res.residual_overlap;
   r.dissipated_energy = res.dissipated_energy;
-  r.m_n = in.m;
+  r.m_n = x.m_n;
   r.m_t = x.m_t;
   r.sliding_at_start = x.sliding_at_start;
   for (const auto& s : x.switches) r.switches.push_back({s.t, s.sliding});
