@@ -151,7 +151,12 @@ template <> struct GearC<5> {
 template <> struct GearC<6> {
   static constexpr double c[6] = {3.0 / 20.0, 251.0 / 360.0, 1.0, 11.0 / 18.0, 1.0 / 6.0, 1.0 / 60.0};
 };
-constexpr double binom(int n, int k) { return k == 0 || k == n ? 1.0 : binom(n - 1, k - 1) + binom(n - 1, k); }
+// Pascal's triangle C(n, k) for n < 7 (the Gear predictor), a table so that the loops use constants
+struct Pascal {
+  static constexpr double c[7][7] = {{1, 0, 0, 0, 0, 0, 0},   {1, 1, 0, 0, 0, 0, 0},    {1, 2, 1, 0, 0, 0, 0},
+                                     {1, 3, 3, 1, 0, 0, 0},   {1, 4, 6, 4, 1, 0, 0},    {1, 5, 10, 10, 5, 1, 0},
+                                     {1, 6, 15, 20, 15, 6, 1}};
+};
 }  // namespace detail
 
 // What start() knows of the motion at the start time t0: the acceleration and, optionally, its
@@ -455,7 +460,7 @@ template <int Q, bool kPos> struct Gear {
       r[2] = 0.5 * h * h * a[k];
       for (int i = 3; i < Q; ++i) r[i] = hist[3 * (i - 3) + k];
       for (int i = kPos ? 0 : 1; i < Q - 1; ++i)
-        for (int j = i + 1; j < Q; ++j) r[i] += detail::binom(j, i) * r[j];
+        for (int j = i + 1; j < Q; ++j) r[i] += detail::Pascal::c[j][i] * r[j];
       if (kPos) x[k] = r[0];
       v[k] = r[1] / h;
       for (int i = 3; i < Q; ++i) hist[3 * (i - 3) + k] = r[i];

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "tdem_lammps_styles.h"
 
+#include "fix_tdem_integrate.h"
 #include "fix_tdem_wall_gran.h"
 #include "force.h"
 #include "lammps.h"
@@ -21,12 +22,18 @@ Fix *create_fix_tdem_wall_gran(LAMMPS *lmp, int narg, char **arg)
 {
   return new FixTDEMWallGran(lmp, narg, arg);
 }
+Fix *create_fix_tdem_integrate(LAMMPS *lmp, int narg, char **arg)
+{
+  return new FixTDEMIntegrate(lmp, narg, arg);
+}
 
 const StyleEntry table[] = {
     {StyleKind::pair, "tdem/gran", "tdem pair style tdem/gran (lsd + cundall_strack)",
      (void *) &create_pair_tdem_gran},
     {StyleKind::fix, "tdem/wall/gran", "tdem fix style tdem/wall/gran (lsd + cundall_strack)",
      (void *) &create_fix_tdem_wall_gran},
+    {StyleKind::fix, "tdem/integrate", "tdem fix style tdem/integrate (time integration schemes)",
+     (void *) &create_fix_tdem_integrate},
     {StyleKind::pair, nullptr, nullptr, nullptr}};
 }  // namespace
 

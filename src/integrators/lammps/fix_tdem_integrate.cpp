@@ -1,0 +1,433 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: fix tdem/integrate (see fix_tdem_integrate.h and docs/lammps.md).
+
+#include "fix_tdem_integrate.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "memory.h"
+#include "update.h"
+
+#include <cstdio>
+#include <cstring>
+#include <mpi.h>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace ti = tdem::integrators;
+
+namespace {
+constexpr double kInertiaSphere = 0.4;  // I = 0.4 m r^2, as fix nve/sphere
+
+std::string allowed_schemes()
+{
+  return ti::scheme_names(", ");
+}
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), scheme(ti::Scheme::velocity_verlet), rotation(1), nhist_t(0), nhist_r(0),
+    stride(1), code(0), nmax_rows(0), store(nullptr), dt_hist(0.0), dt_prev(0.0), pending(1), restart_mismatch(0)
+{
+  const std::string where = std::string("fix ") + id + " tdem/integrate";
+  if (!atom->sphere_flag || !atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
+      !atom->torque_flag)
+    error->all(FLERR, where + " requires atom_style sphere (per-atom radius, rmass, omega, torque); "
+                              "the current atom style '" + std::string(atom->atom_style) +
+                              "' lacks them");
+
+  bool have_scheme = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "scheme") {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, where + ": keyword scheme needs a value; allowed: " + allowed_schemes());
+      if (!ti::parse_scheme(arg[iarg + 1], scheme))
+        error->all(FLERR, where + ": scheme '" + std::string(arg[iarg + 1]) +
+                              "' is unknown; allowed: " + allowed_schemes());
+      have_scheme = true;
+      iarg += 2;
+    } else if (key == "rotation") {
+      if (iarg + 1 >= narg) error->all(FLERR, where + ": keyword rotation needs a value; allowed: yes, no");
+      const std::string val = arg[iarg + 1];
+      if (val == "yes") rotation = 1;
+      else if (val == "no") rotation = 0;
+      else error->all(FLERR, where + ": rotation '" + val + "' is unknown; allowed: yes, no");
+      iarg += 2;
+    } else {
+      error->all(FLERR, where + ": unexpected argument '" + key +
+                            "'; allowed: scheme NAME, rotation yes|no");
+    }
+  }
+  if (!have_scheme)
+    error->all(FLERR, where + ": missing keyword 'scheme NAME'; allowed NAME: " + allowed_schemes());
+
+  ti::dispatch(scheme, [&](auto tag) {
+    constexpr ti::Scheme S = decltype(tag)::value;
+    nhist_t = ti::Kernel<S, true>::history;
+    nhist_r = rotation ? ti::Kernel<S, false>::history : 0;
+    return 0;
+  });
+  stride = 1 + nhist_t + nhist_r;
+  code = 2 * static_cast<int>(scheme) + rotation;
+
+  if (comm->me == 0)
+    utils::logmesg(lmp, fmt::format("fix {} tdem/integrate: scheme {} ({}), rotation {}: {} doubles of "
+                                    "history per atom ({} translation + {} rotation) + 1 flag\n",
+                                    id, ti::info(scheme).name, ti::info(scheme).summary,
+                                    rotation ? "yes" : "no", nhist_t + nhist_r, nhist_t, nhist_r));
+
+  time_integrate = 1;
+  create_attribute = 1;
+  restart_peratom = 1;
+  restart_global = 1;
+  maxexchange = stride;
+  dynamic_group_allow = 0;
+  dt_hist = update->dt;
+  // the per-atom row is output as f_ID[1] (started flag) ... f_ID[stride] (history)
+  peratom_flag = 1;
+  size_peratom_cols = stride;
+  peratom_freq = 1;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+}
+
+FixTDEMIntegrate::~FixTDEMIntegrate()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(store);
+}
+
+int FixTDEMIntegrate::setmask()
+{
+  int mask = 0;
+  mask |= INITIAL_INTEGRATE;
+  mask |= FINAL_INTEGRATE;
+  return mask;
+}
+
+void FixTDEMIntegrate::init()
+{
+  // extended particles only (the angular acceleration divides by r^2)
+  const double *radius = atom->radius;
+  const int *mask = atom->mask;
+  int bad = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && !(radius[i] > 0.0)) bad = 1;
+  int anybad = 0;
+  MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
+  if (anybad)
+    error->all(FLERR, std::string("fix ") + id +
+                          " tdem/integrate: every atom of the group needs radius > 0 (extended particles)");
+}
+
+// A change of the time step: every started atom is marked 2 ("re-start from a state carried with
+// the step dt_prev"); atoms not started yet keep 0.
+void FixTDEMIntegrate::clear_started()
+{
+  for (int i = 0; i < atom->nlocal; i++)
+    if (store[i][0] != 0.0) store[i][0] = 2.0;
+  dt_prev = dt_hist;
+  pending = 1;
+}
+
+// Start (or re-start) atom i from its current state and acceleration. start() takes the
+// synchronous velocity; leapfrog and position_verlet carry v(t - h/2) (the backward difference),
+// so on a re-start after a change of the time step it is first brought to t with the old step.
+template <ti::Scheme S, bool R>
+void FixTDEMIntegrate::start_atom(int i, const double *a, const double *al, double h)
+{
+  double *s = store[i];
+  double *vi = atom->v[i];
+  double *wi = atom->omega[i];
+  if constexpr (S == ti::Scheme::leapfrog || S == ti::Scheme::position_verlet) {
+    if (s[0] == 2.0)
+      for (int k = 0; k < 3; k++) {
+        vi[k] += 0.5 * dt_prev * a[k];
+        if (R) wi[k] += 0.5 * dt_prev * al[k];
+      }
+  }
+  ti::start<S, true>(atom->x[i], vi, a, s + 1, h);
+  if (R) ti::start<S, false>(nullptr, wi, al, s + 1 + nhist_t, h);
+  s[0] = 1.0;
+}
+
+// A new run: the histories continue unless the time step changed since they were built (the
+// `timestep` command after read_restart does not call reset_dt). Atoms without the flag are
+// started at the first initial_integrate, when every fix has added its set-up force.
+void FixTDEMIntegrate::setup(int /*vflag*/)
+{
+  if (update->dt != dt_hist) {
+    int nstarted = 0, all = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if (store[i][0] == 1.0) nstarted++;
+    MPI_Allreduce(&nstarted, &all, 1, MPI_INT, MPI_SUM, world);
+    if (all > 0 && comm->me == 0)
+      error->warning(FLERR, fmt::format("fix {} tdem/integrate: the time step changed from {} to {}; "
+                                        "the integration history of every atom is started again",
+                                        id, dt_hist, update->dt));
+    clear_started();
+    dt_hist = update->dt;
+  }
+}
+
+void FixTDEMIntegrate::reset_dt()
+{
+  if (update->dt == dt_hist) return;
+  if (comm->me == 0)
+    error->warning(FLERR, fmt::format("fix {} tdem/integrate: the time step changed from {} to {}; "
+                                      "the integration history of every atom is started again",
+                                      id, dt_hist, update->dt));
+  clear_started();
+  dt_hist = update->dt;
+}
+
+/* ---------------------------------------------------------------------- */
+
+template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial()
+{
+  using KT = ti::Kernel<S, true>;
+  using KR = ti::Kernel<S, false>;
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **omega = atom->omega, **torque = atom->torque;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+  const double h = update->dt, ftm2v = force->ftm2v;
+  const int ot = 1, orr = 1 + nhist_t;
+
+  if constexpr (S == ti::Scheme::velocity_verlet) {
+    // Kernel<velocity_verlet> with the products grouped as fix nve/sphere groups them
+    // ((h/2 ftm2v / m) F instead of (h/2) (ftm2v F / m)), so that the trajectories are bitwise
+    // those of nve/sphere (a 1-ulp difference per step grows chaotically in a granular flow)
+    const double dtf = 0.5 * h * ftm2v, dtfrot = dtf / kInertiaSphere;
+    for (int i = 0; i < nlocal; i++) {
+      if (!(mask[i] & groupbit)) continue;
+      const double dtfm = dtf / rmass[i];
+      for (int k = 0; k < 3; k++) {
+        v[i][k] += dtfm * f[i][k];
+        x[i][k] += h * v[i][k];
+      }
+      if (R) {
+        const double dtir = dtfrot / (radius[i] * radius[i] * rmass[i]);
+        for (int k = 0; k < 3; k++) omega[i][k] += dtir * torque[i][k];
+      }
+      store[i][0] = 1.0;
+    }
+    return;
+  }
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double *s = store[i];
+    const double c = ftm2v / rmass[i];
+    const double a[3] = {f[i][0] * c, f[i][1] * c, f[i][2] * c};
+    double al[3];
+    if (R) {
+      const double ci = ftm2v / (kInertiaSphere * rmass[i] * radius[i] * radius[i]);
+      al[0] = torque[i][0] * ci;
+      al[1] = torque[i][1] * ci;
+      al[2] = torque[i][2] * ci;
+    }
+    if (s[0] != 1.0) start_atom<S, R>(i, a, al, h);  // first step, or a new time step
+    KT::predict(x[i], v[i], a, s + ot, h);
+    if (R) KR::predict(nullptr, omega[i], al, s + orr, h);
+  }
+}
+
+template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final()
+{
+  using KT = ti::Kernel<S, true>;
+  using KR = ti::Kernel<S, false>;
+  double **x = atom->x, **v = atom->v, **f = atom->f;
+  double **omega = atom->omega, **torque = atom->torque;
+  const double *radius = atom->radius, *rmass = atom->rmass;
+  const int *mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+  const double h = update->dt, ftm2v = force->ftm2v;
+  const int ot = 1, orr = 1 + nhist_t;
+
+  if constexpr (S == ti::Scheme::velocity_verlet) {  // as in loop_initial
+    const double dtf = 0.5 * h * ftm2v, dtfrot = dtf / kInertiaSphere;
+    for (int i = 0; i < nlocal; i++) {
+      if (!(mask[i] & groupbit)) continue;
+      const double dtfm = dtf / rmass[i];
+      for (int k = 0; k < 3; k++) v[i][k] += dtfm * f[i][k];
+      if (R) {
+        const double dtir = dtfrot / (radius[i] * radius[i] * rmass[i]);
+        for (int k = 0; k < 3; k++) omega[i][k] += dtir * torque[i][k];
+      }
+      store[i][0] = 1.0;
+    }
+    return;
+  }
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double *s = store[i];
+    if (!KT::has_correct && s[0] == 1.0) continue;
+    const double c = ftm2v / rmass[i];
+    const double a[3] = {f[i][0] * c, f[i][1] * c, f[i][2] * c};
+    double al[3];
+    if (R) {
+      const double ci = ftm2v / (kInertiaSphere * rmass[i] * radius[i] * radius[i]);
+      al[0] = torque[i][0] * ci;
+      al[1] = torque[i][1] * ci;
+      al[2] = torque[i][2] * ci;
+    }
+    if (s[0] != 1.0) {  // appeared during this step: its first force, start it (no correction)
+      start_atom<S, R>(i, a, al, h);
+      continue;
+    }
+    if constexpr (KT::has_correct) {
+      KT::correct(x[i], v[i], a, s + ot, h);
+      if (R) KR::correct(nullptr, omega[i], al, s + orr, h);
+    }
+  }
+}
+
+void FixTDEMIntegrate::initial_integrate(int /*vflag*/)
+{
+  ti::dispatch(scheme, [&](auto tag) {
+    constexpr ti::Scheme S = decltype(tag)::value;
+    if (rotation) loop_initial<S, true>();
+    else loop_initial<S, false>();
+    return 0;
+  });
+}
+
+void FixTDEMIntegrate::final_integrate()
+{
+  // one-step schemes without a corrector loop only when an atom may need its start
+  if (!ti::has_correct(scheme) && !pending) return;
+  ti::dispatch(scheme, [&](auto tag) {
+    constexpr ti::Scheme S = decltype(tag)::value;
+    if (rotation) loop_final<S, true>();
+    else loop_final<S, false>();
+    return 0;
+  });
+  pending = 0;
+}
+
+double FixTDEMIntegrate::memory_usage()
+{
+  return (double) nmax_rows * stride * sizeof(double);
+}
+
+/* ---------------------------------------------------------------------- per-atom arrays */
+
+void FixTDEMIntegrate::grow_arrays(int n)
+{
+  if (n <= nmax_rows) return;
+  memory->grow(store, n, stride, "tdem/integrate:store");
+  array_atom = store;
+  for (int i = nmax_rows; i < n; i++)
+    for (int m = 0; m < stride; m++) store[i][m] = 0.0;
+  nmax_rows = n;
+}
+
+void FixTDEMIntegrate::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int m = 0; m < stride; m++) store[j][m] = store[i][m];
+}
+
+void FixTDEMIntegrate::set_arrays(int i)
+{
+  // a new atom (create_atoms, read_data, fix pour, deposit ...): started after its first force
+  for (int m = 0; m < stride; m++) store[i][m] = 0.0;
+  pending = 1;
+}
+
+int FixTDEMIntegrate::pack_exchange(int i, double *buf)
+{
+  for (int m = 0; m < stride; m++) buf[m] = store[i][m];
+  return stride;
+}
+
+int FixTDEMIntegrate::unpack_exchange(int nlocal, double *buf)
+{
+  for (int m = 0; m < stride; m++) store[nlocal][m] = buf[m];
+  if (buf[0] == 0.0) pending = 1;
+  return stride;
+}
+
+// per-atom restart record: [count incl. itself, code, started, history ...]
+int FixTDEMIntegrate::pack_restart(int i, double *buf)
+{
+  int n = 0;
+  buf[n++] = stride + 2;
+  buf[n++] = code;
+  for (int m = 0; m < stride; m++) buf[n++] = store[i][m];
+  return n;
+}
+
+void FixTDEMIntegrate::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const int count = static_cast<int>(extra[nlocal][m]);
+  const int stored_code = static_cast<int>(extra[nlocal][m + 1]);
+  if (restart_mismatch || count != stride + 2 || stored_code != code) {
+    for (int k = 0; k < stride; k++) store[nlocal][k] = 0.0;
+    pending = 1;
+    return;
+  }
+  for (int k = 0; k < stride; k++) store[nlocal][k] = extra[nlocal][m + 2 + k];
+}
+
+int FixTDEMIntegrate::maxsize_restart()
+{
+  return stride + 2;
+}
+
+int FixTDEMIntegrate::size_restart(int /*nlocal*/)
+{
+  return stride + 2;
+}
+
+// global restart record: scheme/rotation code, time step of the histories, doubles per atom,
+// the previous time step
+void FixTDEMIntegrate::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  const double list[4] = {static_cast<double>(code), dt_hist, static_cast<double>(stride), dt_prev};
+  const int size = sizeof(list);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list, sizeof(double), 4, fp);
+}
+
+void FixTDEMIntegrate::restart(char *buf)
+{
+  const double *list = reinterpret_cast<const double *>(buf);
+  const int stored_code = static_cast<int>(list[0]);
+  if (stored_code != code || static_cast<int>(list[2]) != stride) {
+    restart_mismatch = 1;
+    pending = 1;
+    if (comm->me == 0) {
+      const int s = stored_code / 2;
+      const std::string old = (s >= 0 && s < static_cast<int>(ti::Scheme::count))
+                                  ? ti::info(static_cast<ti::Scheme>(s)).name
+                                  : "?";
+      error->warning(FLERR, fmt::format("fix {} tdem/integrate: the restart file holds the history of "
+                                        "scheme {} (rotation {}), this fix uses scheme {} (rotation {}); "
+                                        "every atom is started again",
+                                        id, old, stored_code % 2 ? "yes" : "no",
+                                        ti::info(scheme).name, rotation ? "yes" : "no"));
+    }
+    return;
+  }
+  dt_hist = list[1];
+  dt_prev = list[3];
+}
