@@ -31,6 +31,7 @@
 #include "lammps.h"
 #include "utils.h"
 
+#include "integrators/liggghts/fix_tdem_integrate.h"
 #include "register_combo.h"
 #include "tdem_liggghts_ids.h"
 
@@ -231,6 +232,8 @@ void register_styles() {
 void attach(LAMMPS_NS::LAMMPS* lmp) {
   g_lmp = lmp;
   if (!lmp) return;
+  // fix tdem/integrate (src/integrators/liggghts): LIGGGHTS's fix styles live in the instance
+  register_fixes(lmp);
   // The LAMMPS constructor (re)installs LIGGGHTS's own "gran" selector, so the wrapper goes in
   // afterwards. LIGGGHTS prints a collision warning on std::cerr when a selector is replaced;
   // replacing it is intended here, so that warning is silenced.

@@ -1,0 +1,429 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LIGGGHTS 3.8: fix tdem/integrate (see fix_tdem_integrate.h and docs/liggghts.md).
+#include "fix_tdem_integrate.h"
+
+#include <mpi.h>
+
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <string>
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "lammps.h"
+#include "memory.h"
+#include "modify.h"
+#include "update.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace ti = tdem::integrators;
+
+namespace {
+
+std::string allowed_schemes() { return ti::scheme_names(" | "); }
+
+std::string fmt_double(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.15g", x);
+  return buf;
+}
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixTdemIntegrate::FixTdemIntegrate(LAMMPS* lmp, int narg, char** arg)
+    : Fix(lmp, narg, arg),
+      scheme_(ti::Scheme::velocity_verlet),
+      rotation_(true),
+      nhist_t_(0),
+      nhist_r_(0),
+      off_at_(-1),
+      off_ar_(-1),
+      off_ht_(1),
+      off_hr_(1),
+      stride_(1),
+      code_(0),
+      nmax_(0),
+      row_(nullptr),
+      dt_hist_(0.0),
+      restart_mismatch_(false) {
+  const std::string where = std::string("fix ") + id + " tdem/integrate";
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, (where + " replaces fix nve/sphere and requires the per-atom attributes radius, "
+                               "rmass, omega and torque (atom_style granular/sphere); atom_style '" +
+                       std::string(atom->atom_style ? atom->atom_style : "?") + "' lacks " +
+                       (!atom->radius_flag ? "radius" : !atom->rmass_flag ? "rmass"
+                                                    : !atom->omega_flag ? "omega" : "torque"))
+                          .c_str());
+
+  bool have_scheme = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "scheme") {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, (where + ": keyword 'scheme' needs a value; allowed values: " + allowed_schemes())
+                              .c_str());
+      if (!ti::parse_scheme(arg[iarg + 1], scheme_))
+        error->all(FLERR, (where + ": keyword 'scheme' has unknown value '" + std::string(arg[iarg + 1]) +
+                           "'; allowed values: " + allowed_schemes())
+                              .c_str());
+      have_scheme = true;
+      iarg += 2;
+    } else if (key == "rotation") {
+      if (iarg + 1 >= narg)
+        error->all(FLERR, (where + ": keyword 'rotation' needs a value; allowed values: yes | no").c_str());
+      const std::string val = arg[iarg + 1];
+      if (val == "yes")
+        rotation_ = true;
+      else if (val == "no")
+        rotation_ = false;
+      else
+        error->all(FLERR, (where + ": keyword 'rotation' has unknown value '" + val +
+                           "'; allowed values: yes | no")
+                              .c_str());
+      iarg += 2;
+    } else {
+      error->all(FLERR, (where + ": unknown keyword '" + key + "'; allowed keywords: scheme NAME, rotation yes|no")
+                            .c_str());
+    }
+  }
+  if (!have_scheme)
+    error->all(FLERR, (where + ": keyword 'scheme' is missing (fix ID group tdem/integrate scheme NAME "
+                               "[rotation yes|no]); allowed values of scheme: " + allowed_schemes())
+                          .c_str());
+
+  ti::dispatch(scheme_, [&](auto tag) {
+    constexpr ti::Scheme S = decltype(tag)::value;
+    nhist_t_ = ti::Kernel<S, true>::history;
+    nhist_r_ = rotation_ ? ti::Kernel<S, false>::history : 0;
+    return 0;
+  });
+  int n = 1;
+  off_at_ = n;
+  n += 3;
+  if (rotation_) {
+    off_ar_ = n;
+    n += 3;
+  }
+  off_ht_ = n;
+  n += nhist_t_;
+  off_hr_ = n;
+  n += nhist_r_;
+  stride_ = n;
+  code_ = 2 * static_cast<int>(scheme_) + (rotation_ ? 1 : 0);
+
+  time_integrate = 1;
+  create_attribute = 1;
+  restart_peratom = 1;
+  restart_global = 1;
+  dt_hist_ = update->dt;
+
+  if (comm->me == 0) {
+    char line[256];
+    std::snprintf(line, sizeof line,
+                  "fix %s tdem/integrate: scheme %s, rotation %s: %d history doubles (translation %d, "
+                  "rotation %d) + 1 flag + %d last-acceleration = %d doubles (%d bytes) per atom\n",
+                  id, ti::info(scheme_).name, rotation_ ? "yes" : "no", nhist_t_ + nhist_r_, nhist_t_, nhist_r_,
+                  rotation_ ? 6 : 3, stride_, static_cast<int>(stride_ * sizeof(double)));
+    if (screen) std::fputs(line, screen);
+    if (logfile) std::fputs(line, logfile);
+  }
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);
+  atom->add_callback(1);
+}
+
+FixTdemIntegrate::~FixTdemIntegrate() {
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
+  memory->destroy(row_);
+}
+
+int FixTdemIntegrate::setmask() {
+  int mask = 0;
+  mask |= INITIAL_INTEGRATE;
+  mask |= FINAL_INTEGRATE;
+  return mask;
+}
+
+double FixTdemIntegrate::inertia_factor() const { return domain->dimension == 2 ? 0.5 : 0.4; }
+
+void FixTdemIntegrate::init() {
+  // finite-size spheres only (the angular acceleration divides by r^2), as fix nve/sphere
+  const double* radius = atom->radius;
+  const int* mask = atom->mask;
+  int bad = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && !(radius[i] > 0.0)) bad = 1;
+  int anybad = 0;
+  MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
+  if (anybad)
+    error->all(FLERR, (std::string("fix ") + id +
+                       " tdem/integrate: every atom of the group needs radius > 0 (extended particles)")
+                          .c_str());
+}
+
+void FixTdemIntegrate::restart_all(const char* why) {
+  int started = 0, all = 0;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (row_[i][0] != 0.0) started++;
+  MPI_Allreduce(&started, &all, 1, MPI_INT, MPI_SUM, world);
+  if (all > 0 && comm->me == 0)
+    error->warning(FLERR, (std::string("fix ") + id + " tdem/integrate: " + why +
+                           "; the integration history of every atom is started again")
+                              .c_str());
+  for (int i = 0; i < atom->nlocal; i++) row_[i][0] = 0.0;
+}
+
+// A new run continues the histories, unless the time step changed since they were built.
+void FixTdemIntegrate::setup(int) {
+  if (update->dt != dt_hist_) {
+    restart_all(("the time step changed from " + fmt_double(dt_hist_) + " to " + fmt_double(update->dt)).c_str());
+    dt_hist_ = update->dt;
+  }
+}
+
+void FixTdemIntegrate::reset_dt() { setup(0); }
+
+/* ---------------------------------------------------------------------- */
+
+template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_initial() {
+  using KT = ti::Kernel<S, true>;
+  using KR = ti::Kernel<S, false>;
+  double** x = atom->x;
+  double** v = atom->v;
+  double** f = atom->f;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const double* radius = atom->radius;
+  const double* rmass = atom->rmass;
+  const int* mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+  const double h = update->dt, ftm2v = force->ftm2v, inertia = inertia_factor();
+  const int oat = off_at_, oar = off_ar_, oht = off_ht_, ohr = off_hr_;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double* s = row_[i];
+    // the stored acceleration of the last force evaluation (see the header)
+    double* at = s + oat;
+    double* ar = R ? s + oar : nullptr;
+    if (s[0] == 0.0) {  // the first complete force of this atom (or the time step changed): start
+      const double c = ftm2v / rmass[i];
+      at[0] = f[i][0] * c;
+      at[1] = f[i][1] * c;
+      at[2] = f[i][2] * c;
+      ti::start<S, true>(x[i], v[i], at, s + oht, h);
+      if (R) {
+        const double ci = ftm2v / (inertia * rmass[i] * radius[i] * radius[i]);
+        ar[0] = torque[i][0] * ci;
+        ar[1] = torque[i][1] * ci;
+        ar[2] = torque[i][2] * ci;
+        ti::start<S, false>(nullptr, omega[i], ar, s + ohr, h);
+      }
+      s[0] = 1.0;
+    } else if constexpr (S == ti::Scheme::velocity_verlet) {
+      // as fix nve/sphere: the force present now (the set-up force at the first step of a run,
+      // else the same as the stored one)
+      const double c = ftm2v / rmass[i];
+      at[0] = f[i][0] * c;
+      at[1] = f[i][1] * c;
+      at[2] = f[i][2] * c;
+      if (R) {
+        const double ci = ftm2v / (inertia * rmass[i] * radius[i] * radius[i]);
+        ar[0] = torque[i][0] * ci;
+        ar[1] = torque[i][1] * ci;
+        ar[2] = torque[i][2] * ci;
+      }
+    }
+    KT::predict(x[i], v[i], at, s + oht, h);
+    if (R) KR::predict(nullptr, omega[i], ar, s + ohr, h);
+  }
+}
+
+template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_final() {
+  using KT = ti::Kernel<S, true>;
+  using KR = ti::Kernel<S, false>;
+  double** x = atom->x;
+  double** v = atom->v;
+  double** f = atom->f;
+  double** omega = atom->omega;
+  double** torque = atom->torque;
+  const double* radius = atom->radius;
+  const double* rmass = atom->rmass;
+  const int* mask = atom->mask;
+  int nlocal = atom->nlocal;
+  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
+  const double h = update->dt, ftm2v = force->ftm2v, inertia = inertia_factor();
+  const int oat = off_at_, oar = off_ar_, oht = off_ht_, ohr = off_hr_;
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    double* s = row_[i];
+    if (s[0] == 0.0) continue;  // appeared during this step: started at the next initial_integrate
+    double* at = s + oat;
+    const double c = ftm2v / rmass[i];
+    at[0] = f[i][0] * c;
+    at[1] = f[i][1] * c;
+    at[2] = f[i][2] * c;
+    if (KT::has_correct) KT::correct(x[i], v[i], at, s + oht, h);
+    if (R) {
+      double* ar = s + oar;
+      const double ci = ftm2v / (inertia * rmass[i] * radius[i] * radius[i]);
+      ar[0] = torque[i][0] * ci;
+      ar[1] = torque[i][1] * ci;
+      ar[2] = torque[i][2] * ci;
+      if (KR::has_correct) KR::correct(nullptr, omega[i], ar, s + ohr, h);
+    }
+  }
+}
+
+void FixTdemIntegrate::initial_integrate(int) {
+  ti::dispatch(scheme_, [&](auto tag) {
+    constexpr ti::Scheme S = decltype(tag)::value;
+    if (rotation_)
+      loop_initial<S, true>();
+    else
+      loop_initial<S, false>();
+    return 0;
+  });
+}
+
+void FixTdemIntegrate::final_integrate() {
+  ti::dispatch(scheme_, [&](auto tag) {
+    constexpr ti::Scheme S = decltype(tag)::value;
+    if (rotation_)
+      loop_final<S, true>();
+    else
+      loop_final<S, false>();
+    return 0;
+  });
+}
+
+double FixTdemIntegrate::memory_usage() { return static_cast<double>(nmax_) * stride_ * sizeof(double); }
+
+/* ---------------------------------------------------------------------- per-atom rows */
+
+void FixTdemIntegrate::grow_arrays(int n) {
+  if (n <= nmax_) return;
+  memory->grow(row_, n, stride_, "tdem/integrate:row");
+  for (int i = nmax_; i < n; i++)
+    for (int m = 0; m < stride_; m++) row_[i][m] = 0.0;
+  nmax_ = n;
+}
+
+void FixTdemIntegrate::copy_arrays(int i, int j, int) {
+  for (int m = 0; m < stride_; m++) row_[j][m] = row_[i][m];
+}
+
+// a new atom (create_atoms, fix insert/*, ...): started after its first force
+void FixTdemIntegrate::set_arrays(int i) {
+  for (int m = 0; m < stride_; m++) row_[i][m] = 0.0;
+}
+
+int FixTdemIntegrate::pack_exchange(int i, double* buf) {
+  for (int m = 0; m < stride_; m++) buf[m] = row_[i][m];
+  return stride_;
+}
+
+int FixTdemIntegrate::unpack_exchange(int nlocal, double* buf) {
+  for (int m = 0; m < stride_; m++) row_[nlocal][m] = buf[m];
+  return stride_;
+}
+
+// per-atom restart record: [number of values incl. this one, scheme code, row ...]
+int FixTdemIntegrate::pack_restart(int i, double* buf) {
+  int n = 0;
+  buf[n++] = stride_ + 2;
+  buf[n++] = code_;
+  for (int m = 0; m < stride_; m++) buf[n++] = row_[i][m];
+  return n;
+}
+
+void FixTdemIntegrate::unpack_restart(int nlocal, int nth) {
+  double** extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const int count = static_cast<int>(extra[nlocal][m]);
+  const int stored_code = static_cast<int>(extra[nlocal][m + 1]);
+  if (restart_mismatch_ || count != stride_ + 2 || stored_code != code_) {
+    for (int k = 0; k < stride_; k++) row_[nlocal][k] = 0.0;
+    return;
+  }
+  for (int k = 0; k < stride_; k++) row_[nlocal][k] = extra[nlocal][m + 2 + k];
+}
+
+int FixTdemIntegrate::maxsize_restart() { return stride_ + 2; }
+
+int FixTdemIntegrate::size_restart(int) { return stride_ + 2; }
+
+// global restart record: scheme code, time step of the histories, doubles per atom
+void FixTdemIntegrate::write_restart(FILE* fp) {
+  if (comm->me != 0) return;
+  const double list[3] = {static_cast<double>(code_), dt_hist_, static_cast<double>(stride_)};
+  const int size = sizeof(list);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list, sizeof(double), 3, fp);
+}
+
+void FixTdemIntegrate::restart(char* buf) {
+  double list[3];
+  std::memcpy(list, buf, sizeof list);
+  const int stored_code = static_cast<int>(list[0]);
+  if (stored_code != code_ || static_cast<int>(list[2]) != stride_) {
+    restart_mismatch_ = true;
+    if (comm->me == 0) {
+      const int s = stored_code / 2;
+      const std::string old =
+          (s >= 0 && s < static_cast<int>(ti::Scheme::count)) ? ti::info(static_cast<ti::Scheme>(s)).name : "?";
+      error->warning(FLERR, (std::string("fix ") + id + " tdem/integrate: the restart file holds the history of "
+                             "scheme " + old + " (rotation " + (stored_code % 2 ? "yes" : "no") +
+                             "), this fix uses scheme " + ti::info(scheme_).name + " (rotation " +
+                             (rotation_ ? "yes" : "no") + "); every atom is started again")
+                                .c_str());
+    }
+    return;
+  }
+  dt_hist_ = list[1];
+}
+
+/* ---------------------------------------------------------------------- registration */
+
+namespace {
+
+// LIGGGHTS 3.8 keeps Modify::fix_map private and has no style registration API. An explicit
+// template instantiation may name a private member ([temp.explicit]); it hands the member
+// pointer to a friend function, which this file then calls.
+using FixCreatorFn = Fix* (*)(LAMMPS*, int, char**);
+using FixMap = std::map<std::string, FixCreatorFn>;
+struct FixMapMember {
+  using type = FixMap* Modify::*;
+};
+template <class Tag, typename Tag::type M> struct ExposeMember {
+  friend typename Tag::type member_pointer(Tag) { return M; }
+};
+FixMapMember::type member_pointer(FixMapMember);
+template struct ExposeMember<FixMapMember, &Modify::fix_map>;
+
+Fix* create_tdem_integrate(LAMMPS* lmp, int narg, char** arg) { return new FixTdemIntegrate(lmp, narg, arg); }
+
+}  // namespace
+
+namespace tdem {
+namespace liggghts {
+void register_fixes(LAMMPS_NS::LAMMPS* lmp) {
+  if (!lmp || !lmp->modify) return;
+  FixMap* map = lmp->modify->*member_pointer(FixMapMember());
+  if (map) (*map)["tdem/integrate"] = &create_tdem_integrate;
+}
+}  // namespace liggghts
+}  // namespace tdem
