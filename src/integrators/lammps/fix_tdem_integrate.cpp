@@ -74,14 +74,18 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS *lmp, int narg, char **arg) :
     nhist_r = rotation ? ti::Kernel<S, false>::history : 0;
     return 0;
   });
-  stride = 1 + nhist_t + nhist_r;
+  // the acceleration of the last force evaluation of a run, kept for the first step of the next
+  // run (not for velocity_verlet, which uses the set-up force as fix nve/sphere does)
+  nlast = scheme == ti::Scheme::velocity_verlet ? 0 : 6;
+  olast = 1 + nhist_t + nhist_r;
+  stride = olast + nlast;
   code = 2 * static_cast<int>(scheme) + rotation;
 
   if (comm->me == 0)
     utils::logmesg(lmp, fmt::format("fix {} tdem/integrate: scheme {} ({}), rotation {}: {} doubles of "
-                                    "history per atom ({} translation + {} rotation) + 1 flag\n",
+                                    "history per atom ({} translation + {} rotation) + 1 flag + {} kept acceleration\n",
                                     id, ti::info(scheme).name, ti::info(scheme).summary,
-                                    rotation ? "yes" : "no", nhist_t + nhist_r, nhist_t, nhist_r));
+                                    rotation ? "yes" : "no", nhist_t + nhist_r, nhist_t, nhist_r, nlast));
 
   time_integrate = 1;
   create_attribute = 1;
@@ -169,7 +173,7 @@ void FixTDEMIntegrate::setup(int /*vflag*/)
   if (update->dt != dt_hist) {
     int nstarted = 0, all = 0;
     for (int i = 0; i < atom->nlocal; i++)
-      if (store[i][0] == 1.0) nstarted++;
+      if (store[i][0] == 1.0 || store[i][0] == 3.0) nstarted++;
     MPI_Allreduce(&nstarted, &all, 1, MPI_INT, MPI_SUM, world);
     if (all > 0 && comm->me == 0)
       error->warning(FLERR, fmt::format("fix {} tdem/integrate: the time step changed from {} to {}; "
@@ -239,9 +243,16 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial()
       al[1] = torque[i][1] * ci;
       al[2] = torque[i][2] * ci;
     }
-    if (s[0] != 1.0) start_atom<S, R>(i, a, al, h);  // first step, or a new time step
-    KT::predict(x[i], v[i], a, s + ot, h);
-    if (R) KR::predict(nullptr, omega[i], al, s + orr, h);
+    const double *ap = a, *alp = al;
+    if (s[0] == 3.0) {  // first step of a run: the last force of the previous run, not the set-up force
+      ap = s + olast;
+      alp = s + olast + 3;
+      s[0] = 1.0;
+    } else if (s[0] != 1.0) {
+      start_atom<S, R>(i, a, al, h);  // first step, or a new time step
+    }
+    KT::predict(x[i], v[i], ap, s + ot, h);
+    if (R) KR::predict(nullptr, omega[i], alp, s + orr, h);
   }
 }
 
@@ -295,6 +306,33 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final()
       if (R) KR::correct(nullptr, omega[i], al, s + orr, h);
     }
   }
+}
+
+// The acceleration of atom i from the current force and torque (the last evaluation).
+void FixTDEMIntegrate::last_acceleration(int i, double *out) const
+{
+  const double c = force->ftm2v / atom->rmass[i];
+  const double r = atom->radius[i];
+  const double ci = force->ftm2v / (kInertiaSphere * atom->rmass[i] * r * r);
+  for (int k = 0; k < 3; k++) {
+    out[k] = atom->f[i][k] * c;
+    out[3 + k] = rotation ? atom->torque[i][k] * ci : 0.0;
+  }
+}
+
+// End of a run: keep the last force of every started atom for the first step of the next run.
+// The set-up force of the next run is evaluated at the corrected state (and, for some styles,
+// with the contact history of the end of the run), not where the scheme evaluated it, so using
+// it would make `run N` + `run M` differ from `run N+M` for every scheme with a corrector.
+void FixTDEMIntegrate::post_run()
+{
+  if (!nlast) return;
+  const int *mask = atom->mask;
+  for (int i = 0; i < atom->nlocal; i++)
+    if ((mask[i] & groupbit) && store[i][0] == 1.0) {
+      last_acceleration(i, store[i] + olast);
+      store[i][0] = 3.0;
+    }
 }
 
 void FixTDEMIntegrate::initial_integrate(int /*vflag*/)
@@ -369,6 +407,10 @@ int FixTDEMIntegrate::pack_restart(int i, double *buf)
   buf[n++] = stride + 2;
   buf[n++] = code;
   for (int m = 0; m < stride; m++) buf[n++] = store[i][m];
+  if (nlast && store[i][0] == 1.0) {  // written during a run: the force of this step is the last one
+    buf[2] = 3.0;
+    last_acceleration(i, buf + 2 + olast);
+  }
   return n;
 }
 

@@ -46,6 +46,7 @@ class FixTDEMIntegrate : public Fix {
   void initial_integrate(int) override;
   void final_integrate() override;
   void reset_dt() override;
+  void post_run() override;
   double memory_usage() override;
 
   void grow_arrays(int) override;
@@ -67,16 +68,20 @@ class FixTDEMIntegrate : public Fix {
   tdem::integrators::Scheme scheme;
   int rotation;          // 1: integrate omega as well
   int nhist_t, nhist_r;  // history doubles of the translation / rotation channel
-  int stride;            // 1 + nhist_t + nhist_r
+  int nlast;             // 6 (last acceleration and angular acceleration) or 0 (velocity_verlet)
+  int olast;             // offset of the last acceleration in a row: 1 + nhist_t + nhist_r
+  int stride;            // olast + nlast
   int code;              // scheme and rotation, as stored in restart files
   int nmax_rows;         // rows allocated in store
-  double **store;        // [atom][0] started flag, [1 ..] translation history, then rotation
+  double **store;        // [atom][0] flag (0 new, 1 started, 2 re-start, 3 started + last acceleration
+                         // kept for the next run), [1 ..] translation history, rotation history, last acceleration
   double dt_hist;        // the time step the histories were built with
   double dt_prev;        // the time step before the last change (re-start of half-step velocities)
   int pending;           // atoms without the flag may exist (final_integrate must start them)
   int restart_mismatch;  // the restart file was written by another scheme: re-start
 
   void clear_started();
+  void last_acceleration(int, double *) const;
   template <tdem::integrators::Scheme S, bool R> void start_atom(int, const double *, const double *, double);
   template <tdem::integrators::Scheme S, bool R> void loop_initial();
   template <tdem::integrators::Scheme S, bool R> void loop_final();
