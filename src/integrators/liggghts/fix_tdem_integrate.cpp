@@ -270,14 +270,16 @@ template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_final() {
     if (!(mask[i] & groupbit)) continue;
     double* s = row_[i];
     if (s[0] == 0.0) continue;  // appeared during this step: started at the next initial_integrate
-    double* at = s + oat;
+    // velocity_verlet takes the present force at the next step (as nve/sphere): nothing to keep
+    double tmp[6];
+    double* at = S == ti::Scheme::velocity_verlet ? tmp : s + oat;
     const double c = ftm2v / rmass[i];
     at[0] = f[i][0] * c;
     at[1] = f[i][1] * c;
     at[2] = f[i][2] * c;
     if (KT::has_correct) KT::correct(x[i], v[i], at, s + oht, h);
     if (R) {
-      double* ar = s + oar;
+      double* ar = S == ti::Scheme::velocity_verlet ? tmp + 3 : s + oar;
       const double ci = ftm2v / (inertia * rmass[i] * radius[i] * radius[i]);
       ar[0] = torque[i][0] * ci;
       ar[1] = torque[i][1] * ci;
