@@ -234,15 +234,9 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial()
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double *s = store[i];
-    const double c = ftm2v / rmass[i];
-    const double a[3] = {f[i][0] * c, f[i][1] * c, f[i][2] * c};
-    double al[3];
-    if (R) {
-      const double ci = ftm2v / (kInertiaSphere * rmass[i] * radius[i] * radius[i]);
-      al[0] = torque[i][0] * ci;
-      al[1] = torque[i][1] * ci;
-      al[2] = torque[i][2] * ci;
-    }
+    double acc[6];
+    accelerations(i, acc);
+    const double *a = acc, *al = acc + 3;
     const double *ap = a, *alp = al;
     if (s[0] == 3.0) {  // first step of a run: the last force of the previous run, not the set-up force
       ap = s + olast;
@@ -288,15 +282,9 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final()
     if (!(mask[i] & groupbit)) continue;
     double *s = store[i];
     if (!KT::has_correct && s[0] == 1.0) continue;
-    const double c = ftm2v / rmass[i];
-    const double a[3] = {f[i][0] * c, f[i][1] * c, f[i][2] * c};
-    double al[3];
-    if (R) {
-      const double ci = ftm2v / (kInertiaSphere * rmass[i] * radius[i] * radius[i]);
-      al[0] = torque[i][0] * ci;
-      al[1] = torque[i][1] * ci;
-      al[2] = torque[i][2] * ci;
-    }
+    double acc[6];
+    accelerations(i, acc);
+    const double *a = acc, *al = acc + 3;
     if (s[0] != 1.0) {  // appeared during this step: its first force, start it (no correction)
       start_atom<S, R>(i, a, al, h);
       continue;
@@ -308,8 +296,9 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final()
   }
 }
 
-// The acceleration of atom i from the current force and torque (the last evaluation).
-void FixTDEMIntegrate::last_acceleration(int i, double *out) const
+// The acceleration (out[0..2]) and angular acceleration (out[3..5], 0 with rotation no) of atom i
+// from its present force and torque.
+void FixTDEMIntegrate::accelerations(int i, double *out) const
 {
   const double c = force->ftm2v / atom->rmass[i];
   const double r = atom->radius[i];
@@ -330,7 +319,7 @@ void FixTDEMIntegrate::post_run()
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++)
     if ((mask[i] & groupbit) && store[i][0] == 1.0) {
-      last_acceleration(i, store[i] + olast);
+      accelerations(i, store[i] + olast);
       store[i][0] = 3.0;
     }
 }
@@ -409,7 +398,7 @@ int FixTDEMIntegrate::pack_restart(int i, double *buf)
   for (int m = 0; m < stride; m++) buf[n++] = store[i][m];
   if (nlast && store[i][0] == 1.0) {  // written during a run: the force of this step is the last one
     buf[2] = 3.0;
-    last_acceleration(i, buf + 2 + olast);
+    accelerations(i, buf + 2 + olast);
   }
   return n;
 }

@@ -81,7 +81,7 @@ class FixTDEMIntegrate : public Fix {
   int restart_mismatch;  // the restart file was written by another scheme: re-start
 
   void clear_started();
-  void last_acceleration(int, double *) const;
+  void accelerations(int, double *) const;
   template <tdem::integrators::Scheme S, bool R> void start_atom(int, const double *, const double *, double);
   template <tdem::integrators::Scheme S, bool R> void loop_initial();
   template <tdem::integrators::Scheme S, bool R> void loop_final();

@@ -195,16 +195,25 @@ void FixTdemIntegrate::reset_dt() { setup(0); }
 
 /* ---------------------------------------------------------------------- */
 
+// Acceleration of atom i (into at) and, with rotation, its angular acceleration (into ar) from
+// the present force and torque.
+template <bool R>
+void FixTdemIntegrate::accelerations(int i, double ftm2v, double inertia, double* at, double* ar) const {
+  const double c = ftm2v / atom->rmass[i];
+  for (int k = 0; k < 3; k++) at[k] = atom->f[i][k] * c;
+  if (R) {
+    const double r = atom->radius[i];
+    const double ci = ftm2v / (inertia * atom->rmass[i] * r * r);
+    for (int k = 0; k < 3; k++) ar[k] = atom->torque[i][k] * ci;
+  }
+}
+
 template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_initial() {
   using KT = ti::Kernel<S, true>;
   using KR = ti::Kernel<S, false>;
   double** x = atom->x;
   double** v = atom->v;
-  double** f = atom->f;
   double** omega = atom->omega;
-  double** torque = atom->torque;
-  const double* radius = atom->radius;
-  const double* rmass = atom->rmass;
   const int* mask = atom->mask;
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
@@ -218,32 +227,14 @@ template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_initial() {
     double* at = s + oat;
     double* ar = R ? s + oar : nullptr;
     if (s[0] == 0.0) {  // the first complete force of this atom (or the time step changed): start
-      const double c = ftm2v / rmass[i];
-      at[0] = f[i][0] * c;
-      at[1] = f[i][1] * c;
-      at[2] = f[i][2] * c;
+      accelerations<R>(i, ftm2v, inertia, at, ar);
       ti::start<S, true>(x[i], v[i], at, s + oht, h);
-      if (R) {
-        const double ci = ftm2v / (inertia * rmass[i] * radius[i] * radius[i]);
-        ar[0] = torque[i][0] * ci;
-        ar[1] = torque[i][1] * ci;
-        ar[2] = torque[i][2] * ci;
-        ti::start<S, false>(nullptr, omega[i], ar, s + ohr, h);
-      }
+      if (R) ti::start<S, false>(nullptr, omega[i], ar, s + ohr, h);
       s[0] = 1.0;
     } else if constexpr (S == ti::Scheme::velocity_verlet) {
       // as fix nve/sphere: the force present now (the set-up force at the first step of a run,
       // else the same as the stored one)
-      const double c = ftm2v / rmass[i];
-      at[0] = f[i][0] * c;
-      at[1] = f[i][1] * c;
-      at[2] = f[i][2] * c;
-      if (R) {
-        const double ci = ftm2v / (inertia * rmass[i] * radius[i] * radius[i]);
-        ar[0] = torque[i][0] * ci;
-        ar[1] = torque[i][1] * ci;
-        ar[2] = torque[i][2] * ci;
-      }
+      accelerations<R>(i, ftm2v, inertia, at, ar);
     }
     KT::predict(x[i], v[i], at, s + oht, h);
     if (R) KR::predict(nullptr, omega[i], ar, s + ohr, h);
@@ -255,11 +246,7 @@ template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_final() {
   using KR = ti::Kernel<S, false>;
   double** x = atom->x;
   double** v = atom->v;
-  double** f = atom->f;
   double** omega = atom->omega;
-  double** torque = atom->torque;
-  const double* radius = atom->radius;
-  const double* rmass = atom->rmass;
   const int* mask = atom->mask;
   int nlocal = atom->nlocal;
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
@@ -273,19 +260,10 @@ template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_final() {
     // velocity_verlet takes the present force at the next step (as nve/sphere): nothing to keep
     double tmp[6];
     double* at = S == ti::Scheme::velocity_verlet ? tmp : s + oat;
-    const double c = ftm2v / rmass[i];
-    at[0] = f[i][0] * c;
-    at[1] = f[i][1] * c;
-    at[2] = f[i][2] * c;
+    double* ar = S == ti::Scheme::velocity_verlet ? tmp + 3 : s + oar;
+    accelerations<R>(i, ftm2v, inertia, at, ar);
     if (KT::has_correct) KT::correct(x[i], v[i], at, s + oht, h);
-    if (R) {
-      double* ar = S == ti::Scheme::velocity_verlet ? tmp + 3 : s + oar;
-      const double ci = ftm2v / (inertia * rmass[i] * radius[i] * radius[i]);
-      ar[0] = torque[i][0] * ci;
-      ar[1] = torque[i][1] * ci;
-      ar[2] = torque[i][2] * ci;
-      if (KR::has_correct) KR::correct(nullptr, omega[i], ar, s + ohr, h);
-    }
+    if (R && KR::has_correct) KR::correct(nullptr, omega[i], ar, s + ohr, h);
   }
 }
 

@@ -82,6 +82,7 @@ class FixTdemIntegrate : public Fix {
   bool restart_mismatch_;  // restart file of another scheme: every atom starts again
 
   double inertia_factor() const;
+  template <bool R> void accelerations(int i, double ftm2v, double inertia, double* at, double* ar) const;
   void restart_all(const char* why);
   template <tdem::integrators::Scheme S, bool R> void loop_initial();
   template <tdem::integrators::Scheme S, bool R> void loop_final();
