@@ -172,3 +172,27 @@ def tdem_interaction(law=None, walls=True, **kw):
 def scene(interaction, nsteps, dump, thermo=1000, processors=""):
     return SCENE.format(interaction=interaction, nsteps=nsteps, dump=dump, thermo=thermo,
                         processors=processors)
+
+
+def small_bed_data(path, xhi=0.03, vz_shift=0.0):
+    """5 x 5 x 7 spheres on a 5.2 mm lattice in a box of xhi x 0.03 x 0.06 m, diameters 4.0-4.8 mm,
+    velocities +-0.1 m/s (vertical ones shifted by vz_shift), written as a LAMMPS data file."""
+    rows = []
+    k = 0
+    for iz in range(7):
+        for iy in range(5):
+            for ix in range(5):
+                k += 1
+                x, y, z = (0.003 + 0.0052 * (i + 0.5) for i in (ix, iy, iz))
+                d = 0.0040 + 0.0008 * ((k * 7919) % 101) / 100
+                v = [0.2 * (((k * p) % q) / (q - 1) - 0.5) for p, q in ((104729, 97), (7907, 89), (6101, 83))]
+                v[2] += vz_shift
+                rows.append((k, d, x, y, z, v))
+    with open(path, "w") as f:
+        f.write("tdem small bed\n\n%d atoms\n1 atom types\n0 %r xlo xhi\n0 0.03 ylo yhi\n"
+                "0 0.06 zlo zhi\n\nAtoms # sphere\n\n" % (len(rows), xhi))
+        for k, d, x, y, z, v in rows:
+            f.write("%d 1 %r 2500 %r %r %r\n" % (k, d, x, y, z))
+        f.write("\nVelocities\n\n")
+        for k, d, x, y, z, v in rows:
+            f.write("%d %r %r %r 0 0 0\n" % (k, v[0], v[1], v[2]))
