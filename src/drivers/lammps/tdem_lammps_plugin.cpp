@@ -21,6 +21,9 @@ extern "C" __attribute__((visibility("default"))) void lammpsplugin_init(void *l
     if (e->kind == tdem_lammps::StyleKind::pair) {
       plugin.style = "pair";
       plugin.creator.v1 = (lammpsplugin_factory1 *) e->creator;
+    } else if (e->kind == tdem_lammps::StyleKind::compute) {
+      plugin.style = "compute";
+      plugin.creator.v2 = (lammpsplugin_factory2 *) e->creator;
     } else {
       plugin.style = "fix";
       plugin.creator.v2 = (lammpsplugin_factory2 *) e->creator;

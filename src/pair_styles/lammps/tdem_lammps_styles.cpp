@@ -9,6 +9,8 @@
 #include "pair_tdem_gran.h"
 #include "version.h"
 
+#include <vector>
+
 using namespace LAMMPS_NS;
 
 namespace tdem_lammps {
@@ -27,7 +29,7 @@ Fix *create_fix_tdem_integrate(LAMMPS *lmp, int narg, char **arg)
   return new FixTDEMIntegrate(lmp, narg, arg);
 }
 
-const StyleEntry table[] = {
+const StyleEntry core_table[] = {
     {StyleKind::pair, "tdem/gran", "tdem pair style tdem/gran (lsd + cundall_strack)",
      (void *) &create_pair_tdem_gran},
     {StyleKind::fix, "tdem/wall/gran", "tdem fix style tdem/wall/gran (lsd + cundall_strack)",
@@ -39,16 +41,39 @@ const StyleEntry table[] = {
 
 const StyleEntry *style_table()
 {
-  return table;
+  static const std::vector<StyleEntry> all = [] {
+    std::vector<StyleEntry> v;
+    auto add = [&v](const StyleEntry *t) {
+      for (; t->name; ++t) v.push_back(*t);
+    };
+    add(core_table);
+#ifdef TDEM_LMP_MODULE_GRATE
+    add(grate_styles());
+#endif
+#ifdef TDEM_LMP_MODULE_MIXING
+    add(mixing_styles());
+#endif
+#ifdef TDEM_LMP_MODULE_TIMESTEP
+    add(timestep_styles());
+#endif
+#ifdef TDEM_LMP_MODULE_CLUMP
+    add(clump_styles());
+#endif
+    v.push_back(StyleEntry{StyleKind::pair, nullptr, nullptr, nullptr});
+    return v;
+  }();
+  return all.data();
 }
 
 void register_styles(LAMMPS *lmp)
 {
-  for (const StyleEntry *e = table; e->name; ++e) {
+  for (const StyleEntry *e = style_table(); e->name; ++e) {
     if (e->kind == StyleKind::pair)
       (*lmp->force->pair_map)[e->name] = (Force::PairCreator) e->creator;
-    else
+    else if (e->kind == StyleKind::fix)
       (*lmp->modify->fix_map)[e->name] = (Modify::FixCreator) e->creator;
+    else
+      (*lmp->modify->compute_map)[e->name] = (Modify::ComputeCreator) e->creator;
   }
 }
 

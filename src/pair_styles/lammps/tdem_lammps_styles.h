@@ -9,19 +9,26 @@ class LAMMPS;
 
 namespace tdem_lammps {
 
-enum class StyleKind { pair, fix };
+enum class StyleKind { pair, fix, compute };
 
 struct StyleEntry {
   StyleKind kind;
   const char *name;
   const char *info;
-  void *creator;  // Pair *(*)(LAMMPS *) or Fix *(*)(LAMMPS *, int, char **)
+  void *creator;  // Pair *(*)(LAMMPS *), Fix *(*)(LAMMPS *, int, char **) or Compute *(*)(...)
 };
 
-// The table, terminated by an entry with name == nullptr.
+// Styles of the optional modules (CMake options TDEM_LAMMPS_<MODULE>, default ON), each a table
+// terminated by an entry with name == nullptr; defined in src/<module>/lammps/*_styles.cpp.
+const StyleEntry *grate_styles();     // TDEM_LMP_MODULE_GRATE    (src/grate/lammps)
+const StyleEntry *mixing_styles();    // TDEM_LMP_MODULE_MIXING   (src/grate/lammps)
+const StyleEntry *timestep_styles();  // TDEM_LMP_MODULE_TIMESTEP (src/advice/lammps)
+const StyleEntry *clump_styles();     // TDEM_LMP_MODULE_CLUMP    (src/clumps/lammps)
+
+// The table of all styles (core + enabled modules), terminated by an entry with name == nullptr.
 const StyleEntry *style_table();
 
-// Insert every style of the table into lmp->force->pair_map / lmp->modify->fix_map.
+// Insert every style of the table into lmp->force->pair_map / modify->fix_map / compute_map.
 void register_styles(LAMMPS_NS::LAMMPS *lmp);
 
 // The LAMMPS version (LAMMPS_VERSION) these styles were compiled against.

@@ -234,6 +234,18 @@ void attach(LAMMPS_NS::LAMMPS* lmp) {
   if (!lmp) return;
   // fix tdem/integrate (src/integrators/liggghts): LIGGGHTS's fix styles live in the instance
   register_fixes(lmp);
+#ifdef TDEM_LIG_MODULE_GRATE
+  register_grate(lmp);
+#endif
+#ifdef TDEM_LIG_MODULE_MIXING
+  register_mixing(lmp);
+#endif
+#ifdef TDEM_LIG_MODULE_TIMESTEP
+  register_timestep(lmp);
+#endif
+#ifdef TDEM_LIG_MODULE_CLUMP
+  register_clump(lmp);
+#endif
   // The LAMMPS constructor (re)installs LIGGGHTS's own "gran" selector, so the wrapper goes in
   // afterwards. LIGGGHTS prints a collision warning on std::cerr when a selector is replaced;
   // replacing it is intended here, so that warning is silenced.

@@ -21,5 +21,12 @@ void register_styles();
 // models work and LIGGGHTS's generic messages are given.
 void attach(LAMMPS_NS::LAMMPS* lmp);
 
+// Fix/compute styles of the optional modules (CMake options TDEM_LIGGGHTS_<MODULE>, default ON),
+// inserted into the instance's style maps by attach(); defined in src/<module>/liggghts/.
+void register_grate(LAMMPS_NS::LAMMPS* lmp);     // TDEM_LIG_MODULE_GRATE    (src/grate/liggghts)
+void register_mixing(LAMMPS_NS::LAMMPS* lmp);    // TDEM_LIG_MODULE_MIXING   (src/grate/liggghts)
+void register_timestep(LAMMPS_NS::LAMMPS* lmp);  // TDEM_LIG_MODULE_TIMESTEP (src/advice/liggghts)
+void register_clump(LAMMPS_NS::LAMMPS* lmp);     // TDEM_LIG_MODULE_CLUMP    (src/clumps/liggghts)
+
 }  // namespace liggghts
 }  // namespace tdem
