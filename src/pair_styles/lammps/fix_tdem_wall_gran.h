@@ -50,6 +50,9 @@ class FixTDEMWallGran : public Fix {
 
   template <int M, int E, int S, int TL> void eval();
 
+  // read-only view for other tdem styles (fix tdem/timestep): the wall's law
+  const tdem_lammps::LawCoeffs &wall_law() const { return law; }
+
  protected:
   enum { XPLANE = 0, YPLANE = 1, ZPLANE = 2, ZCYLINDER = 3 };
   tdem_lammps::LawCoeffs law;

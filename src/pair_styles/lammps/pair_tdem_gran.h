@@ -59,6 +59,12 @@ class PairTDEMGran : public Pair {
   // evaluation body, instantiated per (mode, end, slip); public for the dispatcher
   template <int M, int E, int S, int TL> void eval(int eflag, int vflag);
 
+  // read-only view for other tdem styles (fix tdem/timestep): the law of type pair (i, j),
+  // 1 <= i, j <= number of types (valid where setflag[i][j] or after init_one), and the
+  // tangential law (TangentialLaw) of all type pairs
+  const tdem_lammps::LawCoeffs &law_of(int i, int j) const { return law[i * (atom_ntypes + 1) + j]; }
+  int tangential_law() const { return utlaw; }
+
  protected:
   double dt;
   int freeze_group_bit;
