@@ -161,7 +161,7 @@ inline Mesh box_mesh(const std::vector<Box>& boxes) {
 inline void write_vtk(std::ostream& os, const std::vector<Box>& boxes, double t) {
   const Mesh m = box_mesh(boxes);
   std::ostringstream s;
-  s.precision(10);
+  s.precision(17);
   s << "# vtk DataFile Version 3.0\n";
   s << "tdem grate bars, time " << t << "\n";
   s << "ASCII\nDATASET POLYDATA\n";
