@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LIGGGHTS: compute ID group tdem/mixing/velocity radius R_V bins AXIS LO HI N
+//                  [periodic AXIS ...] [exclude GROUP]          (docs/mixing_hosts.md)
+// Global array (N + 1) x 5: per bin (last row: all bins) count, p_x, p_y, p_z, P' of the current step;
+// global scalar: P' of all bins. Neighbours are all atoms of the group; `exclude` leaves a group out
+// of the statistics (it still counts as neighbour).
+#pragma once
+
+#include "compute.h"
+#include "grate/mixing_host.h"
+
+namespace LAMMPS_NS {
+
+class ComputeTdemMixingVelocity : public Compute {
+ public:
+  ComputeTdemMixingVelocity(class LAMMPS *, int &, int, char **);
+  virtual ~ComputeTdemMixingVelocity();
+  virtual void init();
+  virtual double compute_scalar();
+  virtual void compute_array();
+
+ private:
+  tdem::grate::mixing::host::VelocityConfig cfg;
+  int excludebit;
+  double **table;
+  void evaluate();
+};
+
+}  // namespace LAMMPS_NS
