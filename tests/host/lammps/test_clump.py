@@ -1,0 +1,570 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""fix tdem/clump (LAMMPS, issue 6): rigid multi-sphere clumps. One part per ctest case
+(--part NAME):
+
+  nve_single   single-sphere clumps (one body per sphere) reproduce fix nve/sphere in a scene with
+               sphere-sphere and wall contacts with friction (1000 steps, positions to round-off)
+  free_body    torque-free asymmetric body (explicit inertia I = 1, 2, 3), 1e5 steps with the splitting
+               scheme: L bitwise constant, energy error bounded; body-frame angular momentum at t = 20
+               vs an independent RK4 integration of Euler's equations
+  flat_impact  flat-face impacts of clumps with N = 1, 2, 4, 8 coplanar spheres on a wall (fix
+               tdem/wall/gran lsd restitution e t_c, no gravity, no friction): e and t_c vs the closed
+               form of N parallel contacts (k -> N k, gamma -> N gamma; physics_reference 6.4)
+  mpi          a few dozen tetra clumps poured onto a floor: -np 1 and -np 2 agree
+  restart      run N + write_restart + read_restart + run M equals run N + run M
+  insert       N clumps inserted: no overlap (with each other and with existing atoms), inside
+               the region, sphere distances of the template, uniformly random orientations; -np 2
+               creates the same spheres
+  bad_input    errors name the keyword, the value and what is allowed
+"""
+import math
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import lmp_common as lc  # noqa: E402
+
+args = lc.parse_args(sys.argv)
+part = args.get("part", "all")
+chk = lc.Checker("lammps.clump." + part)
+TDEM = args["tdem"]
+MPIRUN = args["mpirun"]
+
+DUMP = ("write_dump all custom {out} id mol x y z vx vy vz omegax omegay omegaz radius mass "
+        "modify sort id format float %.17g\n")
+
+# ----------------------------------------------------------------------------- 1. nve/sphere
+SINGLE = """
+units si
+atom_style sphere
+boundary f f f
+newton off
+comm_modify vel yes
+region box block 0 0.03 0 0.03 0 0.03
+create_box 1 box
+fix pm all property/atom mol ghost yes
+lattice sc 0.0041
+region fill block 0.003 0.027 0.003 0.027 0.003 0.015 units box
+create_atoms 1 region fill
+set group all diameter 0.004
+set group all density 2500
+variable m atom id
+set group all mol v_m
+variable vx atom 1.0*(random(0,1,13)-0.5)
+variable vy atom 1.0*(random(0,1,17)-0.5)
+variable vz atom 1.0*(random(0,1,19)-0.5)
+velocity all set v_vx v_vy v_vz
+neighbor 0.001 bin
+neigh_modify delay 0
+neigh_modify exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution 0.7 1e-4 tangential cundall_strack 0.8 0.4
+fix w0 all tdem/wall/gran normal lsd restitution 0.7 1e-4 tangential cundall_strack 0.8 0.4 zplane 0 0.03
+fix w1 all tdem/wall/gran normal lsd restitution 0.7 1e-4 tangential cundall_strack 0.8 0.4 xplane 0 0.03
+fix g all gravity 9.81 vector 0 0 -1
+{integ}
+timestep 2e-6
+compute nc all contact/atom
+compute snc all reduce sum c_nc
+thermo_style custom step ke c_snc
+thermo 100
+run 1000
+""" + DUMP
+
+
+def part_nve_single():
+    wd = lc.workdir("clump_single")
+    _, out_n = lc.run(TDEM, SINGLE.format(integ="fix nve all nve/sphere", out="d.nve"), wd, "in.nve")
+    lc.run(TDEM, SINGLE.format(integ="fix c all tdem/clump template s shape single 0.002 0 density 2500",
+                               out="d.clump"), wd, "in.clump")
+    cols, a = lc.read_dump(os.path.join(wd, "d.nve"))
+    _, b = lc.read_dump(os.path.join(wd, "d.clump"))
+    contacts = max(float(r.split()[2]) for r in lc.thermo_blocks(out_n)[1:])
+    chk.check(contacts >= 20, "the scene has contacts (largest count of sphere contacts %d)" % contacts)
+    for name in ("x", "y", "z", "vx", "vy", "vz", "omegax", "omegay", "omegaz", "mass"):
+        k = cols.index(name)
+        d = np.max(np.abs(a[:, k] - b[:, k])) / max(np.max(np.abs(a[:, k])), 1e-300)
+        tol = 1e-13 if name in ("x", "y", "z", "mass") else 1e-10
+        chk.check(d <= tol, "single-sphere clump vs nve/sphere after 1000 steps: %s max rel diff %.3g (<= %g)"
+                  % (name, d, tol))
+    moved = np.max(np.abs(a[:, cols.index("omegax")]))
+    chk.check(moved > 1.0, "spins were produced by the contacts (max |omega_x| %.3g rad/s)" % moved)
+
+
+# ----------------------------------------------------------------------------- 2. free body
+# An L of three spheres in the xy plane with the intended body's mass properties given
+# explicitly: M = 1, com at the origin, I = diag(1, 2, 3) (principal axes = template axes).
+L_TEMPLATE = """# an L-shape, explicit mass properties
+sphere  0.0 0.0 0.0 0.1
+sphere  0.5 0.0 0.0 0.1
+sphere  0.0 0.5 0.0 0.1
+mass 1.0
+com 0 0 0
+inertia 1 2 3 0 0 0
+"""
+FREE = """
+units si
+atom_style sphere
+boundary f f f
+newton off
+comm_modify vel yes
+region box block -5 5 -5 5 -5 5
+create_box 1 box
+fix pm all property/atom mol ghost yes
+read_data body.data add append fix pm NULL Molecules
+neigh_modify exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd stiffness 1e3 0 tangential cundall_strack 100 0 0.5
+fix c all tdem/clump template L file L.txt rotation {scheme}
+timestep 0.01
+thermo_style custom step f_c f_c[5] f_c[6] f_c[7] f_c[1][8] f_c[1][9] f_c[1][10] f_c[1][11]
+thermo_modify format float %.17g
+thermo {every}
+run {n}
+"""
+
+
+def write_body_data(path, spheres, w):
+    """Data file of one body (molecule 1) at rest in translation, spinning with omega w about
+    the origin (the com): v_i = w x r_i, omega_i = w."""
+    lines = ["LAMMPS data file: one clump", "", "%d atoms" % len(spheres), "1 atom types", "",
+             "-5 5 xlo xhi", "-5 5 ylo yhi", "-5 5 zlo zhi", "", "Atoms # sphere", ""]
+    for i, (x, r) in enumerate(spheres):
+        lines.append("%d 1 %.17g 1000 %.17g %.17g %.17g" % (i + 1, 2 * r, x[0], x[1], x[2]))
+    lines += ["", "Velocities", ""]
+    for i, (x, r) in enumerate(spheres):
+        v = np.cross(w, x)
+        lines.append("%d %.17g %.17g %.17g %.17g %.17g %.17g" % (i + 1, v[0], v[1], v[2], w[0], w[1], w[2]))
+    lines += ["", "Molecules", ""] + ["%d 1" % (i + 1) for i in range(len(spheres))]
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def euler_rk4(I, pi0, t_end, h):
+    """Body-frame angular momentum of the torque-free body: dpi/dt = pi x (I^-1 pi)."""
+    I = np.asarray(I, float)
+
+    def f(p):
+        return np.cross(p, p / I)
+    p = np.array(pi0, float)
+    for _ in range(int(round(t_end / h))):
+        k1 = f(p)
+        k2 = f(p + 0.5 * h * k1)
+        k3 = f(p + 0.5 * h * k2)
+        k4 = f(p + h * k3)
+        p = p + h / 6.0 * (k1 + 2 * k2 + 2 * k3 + k4)
+    return p
+
+
+def quat_matrix(q):
+    w, x, y, z = q
+    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+
+
+def part_free_body():
+    wd = lc.workdir("clump_free")
+    with open(os.path.join(wd, "L.txt"), "w") as f:
+        f.write(L_TEMPLATE)
+    # the template spheres relative to the explicit com (origin), unrotated
+    spheres = [(np.array([0.0, 0.0, 0.0]), 0.1), (np.array([0.5, 0.0, 0.0]), 0.1), (np.array([0.0, 0.5, 0.0]), 0.1)]
+    w0 = np.array([0.2, 1.0, 0.3])  # near the intermediate axis: the body tumbles (Dzhanibekov)
+    write_body_data(os.path.join(wd, "body.data"), spheres, w0)
+    I = np.array([1.0, 2.0, 3.0])
+    L0 = I * w0
+    E0 = 0.5 * np.sum(I * w0 ** 2)
+    res = {}
+    for scheme in ("splitting", "richardson", "explicit"):
+        _, out = lc.run(TDEM, FREE.format(scheme=scheme, every=1000, n=100000), wd, "in.free_" + scheme)
+        rows = np.array([[float(x) for x in r.split()] for r in lc.thermo_blocks(out)[1:]])
+        E = rows[:, 1]
+        L = rows[:, 2:5]
+        res[scheme] = (np.max(np.abs(E - E0)) / E0, np.max(np.abs(L - L[0])) / np.linalg.norm(L0),
+                       abs(E[-1] - E0) / E0, rows)
+        print("%-10s 1e5 steps h = 0.01: max |E - E0|/E0 = %.3g (at the end %.3g), max |L - L(0)|/|L0| = %.3g"
+              % (scheme, res[scheme][0], res[scheme][2], res[scheme][1]))
+    ds, dl, _, rows = res["splitting"]
+    chk.check(dl == 0.0, "splitting: angular momentum (space frame) bitwise constant over 1e5 steps (%.3g)" % dl)
+    chk.check(ds <= 1e-5, "splitting: energy error bounded, max |dE/E| = %.3g over 1e5 steps (<= 1e-5)" % ds)
+    chk.check(np.max(np.abs(rows[0, 2:5] - L0)) / np.linalg.norm(L0) < 1e-14,
+              "initial angular momentum from the sphere velocities = I w (%s vs %s)" % (rows[0, 2:5], L0))
+    chk.check(abs(rows[0, 1] - E0) / E0 < 1e-12,
+              "initial kinetic energy from the sphere velocities = 1/2 w.I.w (rel %.3g)" % (abs(rows[0, 1] - E0) / E0))
+    chk.check(res["explicit"][2] > 10 * ds, "explicit rotation drifts more than splitting (%.3g vs %.3g)"
+              % (res["explicit"][2], ds))
+    # dynamics: body-frame angular momentum at t = 20 (2000 steps) vs RK4 of Euler's equations
+    _, out = lc.run(TDEM, FREE.format(scheme="splitting", every=2000, n=2000), wd, "in.free_t20")
+    row = np.array([float(x) for x in lc.thermo_blocks(out)[-1].split()])
+    q = row[5:9]
+    pi_lmp = quat_matrix(q).T.dot(row[2:5])
+    pi_ref = euler_rk4(I, L0, 20.0, 1e-3)
+    err = np.max(np.abs(pi_lmp - pi_ref)) / np.linalg.norm(L0)
+    moved = np.max(np.abs(pi_ref - L0)) / np.linalg.norm(L0)
+    print("t = 20: body-frame L (LAMMPS) %s, Euler RK4 %s" % (pi_lmp, pi_ref))
+    chk.check(moved > 0.1, "the body tumbles (body-frame L changed by %.3g of |L|)" % moved)
+    chk.check(err <= 2e-3, "body-frame angular momentum at t = 20 vs RK4 of Euler's equations: %.3g (<= 2e-3)" % err)
+
+
+# ----------------------------------------------------------------------------- 3. flat impacts
+IMPACT = """
+units si
+atom_style sphere
+boundary f f f
+newton off
+comm_modify vel yes
+region box block -0.05 0.05 -0.05 0.05 0 0.05
+create_box 1 box
+fix pm all property/atom mol ghost yes
+read_data body.data add append fix pm NULL Molecules
+neigh_modify exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution 0.8 1e-4 tangential cundall_strack 0.8 0
+fix c all tdem/clump template flat file flat.txt density 2500
+fix w all tdem/wall/gran normal lsd restitution {e} {tc} tangential cundall_strack 0.8 0 zplane 0 NULL
+timestep {dt}
+thermo_style custom step f_c[1][4] f_c[1][7]
+thermo_modify format float %.17g
+thermo 1
+run {n}
+"""
+
+
+def flat_template(n, r, d):
+    """n coplanar spheres (z = 0): 1, 2 (1x2), 4 (2x2), 8 (2x4)."""
+    nx, ny = {1: (1, 1), 2: (2, 1), 4: (2, 2), 8: (4, 2)}[n]
+    return [np.array([(i - 0.5 * (nx - 1)) * d, (j - 0.5 * (ny - 1)) * d, 0.0]) for j in range(ny) for i in range(nx)]
+
+
+def closed_form_n(e, tc, n):
+    """LSD, zero-overlap end: single contact (e, tc) with the body mass -> N parallel contacts."""
+    a = -math.log(e) / math.pi          # beta / sqrt(1 - beta^2)
+    beta = a / math.sqrt(1 + a * a)
+    w0 = math.pi / tc / math.sqrt(1 - beta * beta)
+    bn, wn = math.sqrt(n) * beta, math.sqrt(n) * w0
+    return math.exp(-math.pi * bn / math.sqrt(1 - bn * bn)), math.pi / (wn * math.sqrt(1 - bn * bn))
+
+
+def part_flat_impact():
+    wd = lc.workdir("clump_flat")
+    e, tc, r, d, v0 = 0.8, 1e-4, 0.002, 0.0045, 1.0
+    dt = tc / 4000
+    z0 = r + 2e-6  # 2 microseconds of free flight before the contact
+    for n in (1, 2, 4, 8):
+        pts = flat_template(n, r, d)
+        with open(os.path.join(wd, "flat.txt"), "w") as f:
+            f.write("".join("sphere %.17g %.17g %.17g %.17g\n" % (p[0], p[1], p[2], r) for p in pts))
+        lines = ["one flat clump", "", "%d atoms" % n, "1 atom types", "", "-0.05 0.05 xlo xhi",
+                 "-0.05 0.05 ylo yhi", "0 0.05 zlo zhi", "", "Atoms # sphere", ""]
+        for i, p in enumerate(pts):
+            lines.append("%d 1 %.17g 2500 %.17g %.17g %.17g" % (i + 1, 2 * r, p[0], p[1], p[2] + z0))
+        lines += ["", "Velocities", ""] + ["%d 0 0 %.17g 0 0 0" % (i + 1, -v0) for i in range(n)]
+        lines += ["", "Molecules", ""] + ["%d 1" % (i + 1) for i in range(n)]
+        with open(os.path.join(wd, "body.data"), "w") as f:
+            f.write("\n".join(lines) + "\n")
+        e_ref, t_ref = closed_form_n(e, tc, n)
+        nsteps = int((2e-6 + 1.3 * t_ref) / dt) + 200
+        _, out = lc.run(TDEM, IMPACT.format(e=e, tc=tc, dt=dt, n=nsteps), wd, "in.flat%d" % n)
+        rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+        t = rows[:, 0] * dt
+        xi = r - rows[:, 1]  # overlap of every sphere (coplanar with the com)
+        vz = rows[:, 2]
+        on = np.where(xi > 0)[0]
+        i0, i1 = on[0], on[-1]
+        # linear interpolation of the zero crossings of the overlap
+        ts = t[i0 - 1] + (0 - xi[i0 - 1]) / (xi[i0] - xi[i0 - 1]) * dt
+        te = t[i1] + (0 - xi[i1]) / (xi[i1 + 1] - xi[i1]) * dt
+        e_m = vz[-1] / v0
+        t_m = te - ts
+        print("N = %d: e %.6f (closed form %.6f), t_c %.6e s (closed form %.6e s)" % (n, e_m, e_ref, t_m, t_ref))
+        chk.check(abs(e_m - e_ref) / e_ref <= 1e-3 and abs(t_m - t_ref) / t_ref <= 1e-3,
+                  "N = %d flat-face impact: e rel err %.2g, t_c rel err %.2g vs the N-contact closed form (<= 1e-3)"
+                  % (n, abs(e_m - e_ref) / e_ref, abs(t_m - t_ref) / t_ref))
+        if n > 1:
+            chk.check(abs(e_m - e) > 0.01, "N = %d differs from the single-contact e %.2f (%.4f)" % (n, e, e_m))
+
+
+# ----------------------------------------------------------------------------- 4./5. pour
+POUR = """
+units si
+atom_style sphere
+boundary p p f
+newton off
+comm_modify vel yes
+atom_modify map array
+region box block 0 0.025 0 0.025 0 0.08
+create_box 1 box
+fix pm all property/atom mol ghost yes
+region ins block 0.0 0.025 0.0 0.025 0.003 0.05
+fix c all tdem/clump template tet shape tetra 0.002 0.003 density 2500 insert 40 region ins seed 4711 vel 0 0 -1
+neighbor 0.001 bin
+neigh_modify delay 0 exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4
+fix floor all tdem/wall/gran normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4 zplane 0 NULL
+fix g all gravity 9.81 vector 0 0 -1
+timestep 5e-6
+compute nc all contact/atom
+compute snc all reduce sum c_nc
+thermo_style custom step atoms f_c f_c[1] c_snc
+thermo_modify format float %.15g
+thermo 200
+"""
+POUR_RESTART = """
+units si
+atom_style sphere
+atom_modify map array
+read_restart pour.restart
+fix pm all property/atom mol ghost yes
+comm_modify vel yes
+neighbor 0.001 bin
+neigh_modify delay 0 exclude molecule/intra all
+fix c all tdem/clump template tet shape tetra 0.002 0.003 density 2500 insert 40 region ins seed 4711 vel 0 0 -1
+fix floor all tdem/wall/gran normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4 zplane 0 NULL
+fix g all gravity 9.81 vector 0 0 -1
+timestep 5e-6
+thermo_style custom step atoms f_c f_c[1]
+thermo_modify format float %.15g
+thermo 1000
+run {m}
+""" + DUMP
+
+
+def body_rows(path):
+    cols, a = lc.read_dump(path)
+    return cols, a
+
+
+def part_mpi():
+    wd = lc.workdir("clump_mpi")
+    text = POUR + "run 10000\n" + DUMP.format(out="d.np{np}")
+    _, o1 = lc.run(TDEM, text.format(np=1), wd, "in.np1")
+    _, o2 = lc.run(TDEM, text.format(np=2), wd, "in.np2", np_=2, mpirun=MPIRUN)
+    cols, a = lc.read_dump(os.path.join(wd, "d.np1"))
+    _, b = lc.read_dump(os.path.join(wd, "d.np2"))
+    contacts = max(float(r.split()[4]) for r in lc.thermo_blocks(o1)[1:])
+    chk.check(contacts >= 10, "the pour has contacts (largest sphere contact count %d)" % contacts)
+    chk.check(a.shape == b.shape and a.shape[0] == 160, "160 spheres on 1 and on 2 ranks")
+    per, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
+    print("np 1 vs np 2: max relative difference per column (x y z vx vy vz wx wy wz) %s" % per)
+    chk.check(worst <= 1e-8, "-np 2 equals -np 1 after 10000 steps of pouring (max rel diff %.3g <= 1e-8)" % worst)
+    # the clumps stayed rigid: distances inside each clump equal the tetra edge 0.003
+    x = a[:, 2:5]
+    dmax = 0.0
+    for m in np.unique(a[:, 1]):
+        p = x[a[:, 1] == m]
+        for i in range(4):
+            for j in range(i + 1, 4):
+                dd = p[i] - p[j]
+                dd[:2] -= 0.025 * np.round(dd[:2] / 0.025)  # periodic in x and y
+                dmax = max(dmax, abs(np.linalg.norm(dd) - 0.003))
+    chk.check(dmax <= 1e-12, "clumps stay rigid: sphere distances = edge to %.3g m" % dmax)
+    fell = np.max(x[:, 2])
+    chk.check(np.min(x[:, 2]) < 0.002 + 1e-6, "clumps touch the floor (lowest sphere at %.5f m)" % np.min(x[:, 2]))
+    chk.check(fell < 0.05, "the clumps fell (highest sphere at %.4f m)" % fell)
+
+
+def part_restart():
+    wd = lc.workdir("clump_restart")
+    # (600 steps: later, the different order of the atoms after read_restart changes the order
+    # of the per-atom sums of the pair style at round-off level, and the dense pile amplifies it)
+    full = POUR + "run 6000\nrun 600\n" + DUMP.format(out="d.full")
+    lc.run(TDEM, full, wd, "in.full", np_=2, mpirun=MPIRUN)
+    first = POUR + "run 6000\nwrite_restart pour.restart\n"
+    lc.run(TDEM, first, wd, "in.first", np_=2, mpirun=MPIRUN)
+    _, out = lc.run(TDEM, POUR_RESTART.format(m=600, out="d.rest"), wd, "in.rest", np_=2, mpirun=MPIRUN)
+    chk.check("'insert' is skipped" in out, "the restarted fix does not insert again")
+    cols, a = lc.read_dump(os.path.join(wd, "d.full"))
+    _, b = lc.read_dump(os.path.join(wd, "d.rest"))
+    chk.check(a.shape == b.shape, "same spheres after the restart (%s vs %s)" % (a.shape, b.shape))
+    per, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
+    print("restart: max relative difference per column %s (%d values differ)" % (per, int((a != b).sum())))
+    chk.check(worst <= 1e-10, "run 6000 + write/read_restart + run 600 equals run 6000 + run 600 (%.3g <= 1e-10)"
+              % worst)
+    # control: the same restart with the contact history of the pair style dropped
+    lost = POUR_RESTART.replace("fix floor all", "pair_style none\npair_style tdem/gran\npair_coeff * * normal "
+                                "lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4\nfix floor all")
+    lost = lost.format(m=600, out="d.lost")
+    lc.run(TDEM, lost, wd, "in.lost", np_=2, mpirun=MPIRUN)
+    _, c = lc.read_dump(os.path.join(wd, "d.lost"))
+    _, worst_lost = lc.rel_diff(c[:, 2:12], a[:, 2:12])
+    chk.check(worst_lost > 1e-6, "control: dropping the pair contact history changes the result (%.3g)" % worst_lost)
+
+
+# ----------------------------------------------------------------------------- 6. insertion
+INSERT = """
+units si
+atom_style sphere
+boundary p p f
+newton off
+comm_modify vel yes
+region box block 0 0.05 0 0.05 0 0.05
+create_box 2 box
+fix pm all property/atom mol ghost yes
+# existing atoms in the region: a coarse lattice of type 2 spheres
+lattice sc 0.01
+region old block 0.005 0.045 0.005 0.045 0.005 0.045 units box
+create_atoms 2 region old
+set type 2 diameter 0.003
+set type 2 density 2500
+group old type 2
+region ins block 0.0 0.05 0.0 0.05 0.002 0.048 units box
+fix c all tdem/clump template tet shape tetra 0.0015 0.0025 density 2500 insert {n} region ins seed 99 type 1 vel 0.1 0 0
+neigh_modify exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4
+fix fr old freeze
+timestep 1e-6
+run 0
+write_dump all custom d.ins{np} id mol type x y z vx vy vz radius mass modify sort id format float %.17g
+"""
+
+
+def part_insert():
+    wd = lc.workdir("clump_insert")
+    n = 300
+    _, out = lc.run(TDEM, INSERT.format(n=n, np=1), wd, "in.ins1")
+    lc.run(TDEM, INSERT.format(n=n, np=2), wd, "in.ins2", np_=2, mpirun=MPIRUN)
+    cols, a = lc.read_dump(os.path.join(wd, "d.ins1"))
+    _, b = lc.read_dump(os.path.join(wd, "d.ins2"))
+    chk.check(a.shape == b.shape and np.array_equal(a, b), "-np 2 creates the same spheres as -np 1 (bitwise)")
+    typ = a[:, cols.index("type")]
+    new = a[typ == 1]
+    old = a[typ == 2]
+    x = new[:, 3:6]
+    L = 0.05
+    chk.check(new.shape[0] == 4 * n and len(np.unique(new[:, 1])) == n,
+              "%d clumps of 4 spheres with distinct molecule IDs (%d spheres)" % (n, new.shape[0]))
+    chk.check(np.all(new[:, cols.index("radius")] == 0.0015), "sphere radius from the template")
+    # mass: tetra spheres d = 2.5 mm < 2 r = 3 mm overlap, so each sphere has 1/4 of the union mass,
+    # less than a full sphere and more than 1/4 of... bounds from the geometry
+    m = new[:, cols.index("mass")]
+    msphere = 4.0 / 3.0 * math.pi * 0.0015 ** 3 * 2500
+    chk.check(np.all(m < msphere) and np.all(m > 0.7 * msphere) and np.ptp(m) == 0,
+              "sphere mass = 1/4 of the union mass: %.4g (a full sphere %.4g)" % (m[0], msphere))
+    # inside the region (z: [0.002, 0.048] with the sphere extent; x, y periodic)
+    zlo, zhi = np.min(x[:, 2] - 0.0015), np.max(x[:, 2] + 0.0015)
+    chk.check(zlo >= 0.002 and zhi <= 0.048, "every sphere inside the region (z extent %.5f .. %.5f)" % (zlo, zhi))
+    # no overlap: between clumps, and with the existing atoms (minimum image in x and y)
+    allx = np.vstack([x, old[:, 3:6]])
+    allr = np.concatenate([new[:, cols.index("radius")], old[:, cols.index("radius")]])
+    mol = np.concatenate([new[:, 1], -1 - np.arange(old.shape[0])])
+    worst = np.inf
+    for i in range(x.shape[0]):
+        d = allx - x[i]
+        d[:, :2] -= L * np.round(d[:, :2] / L)
+        dist = np.sqrt(np.sum(d * d, axis=1))
+        other = mol != mol[i]
+        gap = dist[other] - (allr[other] + allr[i])
+        worst = min(worst, np.min(gap))
+    chk.check(worst >= 0.0, "no overlap between clumps or with the %d existing atoms (smallest gap %.3g m)"
+              % (old.shape[0], worst))
+    # rigid template: the 6 distances in each clump equal the edge 0.0025
+    dev = 0.0
+    dirs = []
+    for mm in np.unique(new[:, 1]):
+        p = x[new[:, 1] == mm]
+        for i in range(4):
+            for j in range(i + 1, 4):
+                dev = max(dev, abs(np.linalg.norm(p[i] - p[j]) - 0.0025))
+        u = p[0] - p.mean(axis=0)
+        dirs.append(u / np.linalg.norm(u))
+    chk.check(dev <= 1e-15, "sphere distances of the template (edge) to %.3g m" % dev)
+    dirs = np.array(dirs)
+    mean = np.linalg.norm(dirs.mean(axis=0))
+    zz = np.mean(dirs[:, 2] ** 2)
+    xx = np.mean(dirs[:, 0] ** 2)
+    print("orientation spread: |mean of a body axis| %.3f (uniform: ~%.3f), <u_z^2> %.3f, <u_x^2> %.3f (uniform 1/3)"
+          % (mean, 1 / math.sqrt(n), zz, xx))
+    chk.check(mean < 4 / math.sqrt(n) and abs(zz - 1 / 3) < 0.06 and abs(xx - 1 / 3) < 0.06,
+              "random orientations: uniform on the sphere within 4 sigma")
+    v = new[:, cols.index("vx")]
+    chk.check(np.all(v == 0.1), "initial velocity from 'vel'")
+
+
+# ----------------------------------------------------------------------------- 7. bad input
+BAD_BASE = """
+units si
+atom_style sphere
+boundary f f f
+comm_modify vel yes
+region box block 0 0.05 0 0.05 0 0.05
+create_box 1 box
+{pm}
+region ins block 0.01 0.04 0.01 0.04 0.01 0.04
+create_atoms 1 single 0.025 0.025 0.025
+set group all diameter 0.004
+set group all density 2500
+{setmol}
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4
+{fix}
+timestep 1e-6
+run 1
+"""
+PM = "fix pm all property/atom mol ghost yes"
+
+
+def part_bad_input():
+    wd = lc.workdir("clump_bad")
+    with open(os.path.join(wd, "bad.txt"), "w") as f:
+        f.write("sphere 0 0 0 0.002\ncolor red\n")
+    with open(os.path.join(wd, "two.txt"), "w") as f:
+        f.write("sphere 0 0 0 0.002\nsphere 0.005 0 0 0.002\n")
+    cases = [
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500", "", "property/atom mol"),
+        ("fix c all tdem/clump template s shape blob 0.002 0 density 2500", PM, "shape 'blob' is unknown; allowed"),
+        ("fix c all tdem/clump template s shape single -0.002 0 density 2500", PM, "radius r = -0.002"),
+        ("fix c all tdem/clump template s shape single 0.002 0", PM, "missing keyword 'density RHO'"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 rotation leapfrog", PM,
+         "rotation 'leapfrog' is unknown; allowed: splitting, explicit, richardson"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 integration exact", PM,
+         "integration 'exact' is unknown; allowed: columns, voxel, monte_carlo"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 resolution 2", PM,
+         "'resolution': value '2' is not an integer in [4, 4096]"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 colour red", PM,
+         "unknown keyword 'colour'; allowed"),
+        ("fix c all tdem/clump shape single 0.002 0 density 2500", PM, "missing keyword 'template NAME'"),
+        ("fix c all tdem/clump template s file bad.txt density 2500", PM, "unknown keyword 'color'"),
+        ("fix c all tdem/clump template s file nothere.txt density 2500", PM, "cannot be opened"),
+        ("fix c all tdem/clump template s file two.txt density 2500", PM, "molecule 1 has 1 spheres in group all"),
+        ("fix c all tdem/clump template s shape single 0.003 0 density 2500", PM,
+         "has radius 0.002 but sphere 1 of template s has radius 0.003"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 insert 10 region nowhere seed 1", PM,
+         "insert region 'nowhere' does not exist"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 insert 10 region ins seed -3", PM,
+         "'insert seed': value '-3' is not an integer"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 insert 100000 region ins seed 5", PM,
+         "insert: placed only"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 bodies atoms", PM,
+         "bodies 'atoms' is unknown; allowed: molecule"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500\nfix n all nve/sphere", PM,
+         "also integrates clump spheres"),
+    ]
+    for fix, pm, expect in cases:
+        rc, out = lc.run(TDEM, BAD_BASE.format(pm=pm, fix=fix, setmol="set group all mol 1" if pm else ""), wd, "in.bad", check=False, timeout=120)
+        err = [l for l in out.splitlines() if "ERROR" in l]
+        ok = rc != 0 and rc < 128 and err and expect in " ".join(err)
+        chk.check(bool(ok), "%-60s -> %s" % (fix.replace("\n", " | ")[:60], err[0][:150] if err else "no error (rc %d)" % rc))
+    rc, out = lc.run(TDEM, BAD_BASE.format(pm=PM, setmol="set group all mol 1", fix="fix c all tdem/clump template s shape single 0.002 0 "
+                                           "density 2500"), wd, "in.good", check=False)
+    chk.check(rc == 0, "control: the good input runs (rc %d)" % rc)
+    # a clump of several spheres without 'neigh_modify exclude molecule/intra': a warning
+    rc, out = lc.run(TDEM, BAD_BASE.format(pm=PM, setmol="", fix="fix c all tdem/clump template t shape tetra 0.002 "
+                                           "0.003 density 2500 insert 2 region ins seed 3"), wd, "in.warn", check=False)
+    warn = [l for l in out.splitlines() if "WARNING" in l and "tdem/clump" in l]
+    chk.check(rc == 0 and warn and "neigh_modify exclude molecule/intra all" in warn[0],
+              "missing intra-clump exclusion -> %s" % (warn[0][:140] if warn else "no warning (rc %d)" % rc))
+
+
+PARTS = {"nve_single": part_nve_single, "free_body": part_free_body, "flat_impact": part_flat_impact,
+         "mpi": part_mpi, "restart": part_restart, "insert": part_insert, "bad_input": part_bad_input}
+if part == "all":
+    for f in PARTS.values():
+        f()
+else:
+    PARTS[part]()
+chk.done()

@@ -1,0 +1,11 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+# fix tdem/clump (module clump, src/clumps/lammps): included by tests/host/lammps/CMakeLists.txt
+if(NOT TDEM_LAMMPS_CLUMP)
+  return()
+endif()
+foreach(_p nve_single free_body flat_impact mpi restart insert bad_input)
+  add_test(NAME lammps.clump.${_p}
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py ${_args} --part ${_p})
+  set_tests_properties(lammps.clump.${_p} PROPERTIES LABELS lammps TIMEOUT 600)
+endforeach()
+set_tests_properties(lammps.clump.mpi lammps.clump.restart lammps.clump.insert PROPERTIES PROCESSORS 2)
