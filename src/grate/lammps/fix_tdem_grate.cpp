@@ -1,0 +1,778 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: fix tdem/grate (see fix_tdem_grate.h and docs/grate_lammps.md).
+
+#include "fix_tdem_grate.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "memory.h"
+#include "modify.h"
+#include "respa.h"
+#include "update.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace tg = tdem::grate;
+
+namespace {
+
+const char *GRATE_KEYWORDS =
+    "rows, bar_length, bar_height, bar_thickness, bar_gap, step_height, overlap, declination, "
+    "width, side_walls, wall_height, wall_thickness, type, frame, origin, row_group, group_phase, "
+    "profile, stroke, period, frequency, t_start, dwell_out, dwell_home, forward_share, ramp, vtk, "
+    "max_contacts";
+
+bool parse_double(const char *s, double &v)
+{
+  char *end = nullptr;
+  errno = 0;
+  v = strtod(s, &end);
+  return end != s && *end == '\0' && errno != ERANGE && std::isfinite(v);
+}
+
+bool parse_int(const char *s, long &v)
+{
+  char *end = nullptr;
+  errno = 0;
+  v = strtol(s, &end, 10);
+  return end != s && *end == '\0' && errno != ERANGE;
+}
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), slots(nullptr), fix_rigid(nullptr), mass_rigid(nullptr)
+{
+  where = std::string("fix ") + id + " tdem/grate";
+  if (!atom->sphere_flag) error->all(FLERR, where + " requires atom_style sphere");
+
+  create_attribute = 1;
+  restart_peratom = 1;
+  restart_global = 1;
+  nlevels_respa = 0;
+  nmax_rigid = 0;
+  ndeep = 0;
+  per_axis = -1;
+  per_len = 0.0;
+  force_flag = 0;
+  fbar[0] = fbar[1] = fbar[2] = 0.0;
+  fbar_all[0] = fbar_all[1] = fbar_all[2] = 0.0;
+
+  int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
+  size_history = tdem_lammps::history_size(law.mode, law.tlaw);
+
+  // ---- grate and motion keywords
+  tg::GrateParams gp;
+  max_contacts = 4;
+  vtk_every = 0;
+  bool frame_given = false;
+  auto value = [&](const std::string &key, int k) -> const char * {
+    if (iarg + k >= narg)
+      error->all(FLERR, where + ": keyword '" + key + "' needs a value, got end of line");
+    return arg[iarg + k];
+  };
+  auto number = [&](const std::string &key, int k) -> double {
+    const char *s = value(key, k);
+    double v;
+    if (!parse_double(s, v))
+      error->all(FLERR, where + ": keyword '" + key + "' = '" + s + "' is not a finite number");
+    return v;
+  };
+  auto integer = [&](const std::string &key, int k) -> long {
+    const char *s = value(key, k);
+    long v;
+    if (!parse_int(s, v))
+      error->all(FLERR, where + ": keyword '" + key + "' = '" + s + "' is not an integer");
+    return v;
+  };
+  auto choice = [&](const std::string &key, const std::vector<std::string> &allowed) -> int {
+    const std::string s = value(key, 1);
+    for (size_t k = 0; k < allowed.size(); ++k)
+      if (s == allowed[k]) return static_cast<int>(k);
+    std::string all;
+    for (const auto &a : allowed) all += (all.empty() ? "" : ", ") + a;
+    error->all(FLERR, where + ": keyword '" + key + "' = '" + s + "' is not known; allowed: " + all);
+    return -1;
+  };
+
+  while (iarg < narg) {
+    std::string key = arg[iarg];
+    // aliases (the core's field names, the LIGGGHTS fix's spellings)
+    if (key == "declination_deg") key = "declination";
+    else if (key == "moving") key = "row_group";
+    else if (key == "phase") key = "group_phase";
+    if (key == "rows") {
+      const long v = integer(key, 1);
+      if (v < 1 || v > 100000)
+        error->all(FLERR, where + ": keyword 'rows' = " + arg[iarg + 1] +
+                              " is outside the allowed range [1, 100000]");
+      gp.rows = static_cast<int>(v);
+      iarg += 2;
+    } else if (key == "bar_length") {
+      gp.bar_length = number(key, 1), iarg += 2;
+    } else if (key == "bar_height") {
+      gp.bar_height = number(key, 1), iarg += 2;
+    } else if (key == "bar_thickness") {
+      gp.bar_thickness = number(key, 1), iarg += 2;
+    } else if (key == "bar_gap") {
+      gp.bar_gap = number(key, 1), iarg += 2;
+    } else if (key == "step_height") {
+      gp.step_height = number(key, 1), iarg += 2;
+    } else if (key == "overlap") {
+      gp.overlap = number(key, 1), iarg += 2;
+    } else if (key == "declination") {
+      gp.declination_deg = number(key, 1), iarg += 2;
+    } else if (key == "width") {
+      gp.width = number(key, 1), iarg += 2;
+    } else if (key == "side_walls") {
+      gp.side_walls = choice(key, {"no", "yes"}) == 1, iarg += 2;
+    } else if (key == "wall_height") {
+      gp.wall_height = number(key, 1), iarg += 2;
+    } else if (key == "wall_thickness") {
+      gp.wall_thickness = number(key, 1), iarg += 2;
+    } else if (key == "type") {
+      gp.type = choice(key, {"forward", "reverse"}) == 0 ? tg::GrateType::forward_acting
+                                                         : tg::GrateType::reverse_acting;
+      iarg += 2;
+    } else if (key == "frame") {
+      gp.frame = choice(key, {"xyz", "xy"}) == 0 ? tg::Frame::xyz : tg::Frame::xy;
+      frame_given = true;
+      iarg += 2;
+    } else if (key == "origin") {
+      gp.origin = {number(key, 1), number(key, 2), number(key, 3)};
+      iarg += 4;
+    } else if (key == "row_group") {
+      gp.row_group.clear();
+      long v;
+      ++iarg;
+      while (iarg < narg && parse_int(arg[iarg], v)) {
+        if (v < -1)
+          error->all(FLERR, where + ": keyword 'row_group' value " + arg[iarg] +
+                                " is outside the allowed values {-1 (fixed), 0, 1, ...}");
+        gp.row_group.push_back(static_cast<int>(v));
+        ++iarg;
+      }
+      if (gp.row_group.empty())
+        error->all(FLERR, where + ": keyword 'row_group' needs one integer per row (-1 fixed, "
+                                  "g >= 0 moving in phase group g), got '" +
+                              (iarg < narg ? arg[iarg] : "end of line") + "'");
+    } else if (key == "group_phase") {
+      gp.group_phase.clear();
+      double v;
+      ++iarg;
+      while (iarg < narg && parse_double(arg[iarg], v)) {
+        gp.group_phase.push_back(v);
+        ++iarg;
+      }
+      if (gp.group_phase.empty())
+        error->all(FLERR, where + ": keyword 'group_phase' needs one value in [0, 1) per phase "
+                                  "group, got '" +
+                              (iarg < narg ? arg[iarg] : "end of line") + "'");
+    } else if (key == "profile") {
+      const int p = choice(key, {"sinusoidal", "trapezoidal", "trapezoidal_accel"});
+      gp.motion.profile = p == 0 ? tg::Profile::sinusoidal
+                          : p == 1 ? tg::Profile::trapezoidal
+                                   : tg::Profile::trapezoidal_accel;
+      iarg += 2;
+    } else if (key == "stroke") {
+      gp.motion.stroke = number(key, 1), iarg += 2;
+    } else if (key == "period") {
+      gp.motion.period = number(key, 1), iarg += 2;
+    } else if (key == "frequency") {
+      const double f = number(key, 1);
+      if (!(f > 0.0))
+        error->all(FLERR, where + ": keyword 'frequency' = " + arg[iarg + 1] +
+                              " is outside the allowed range (0, inf)");
+      gp.motion.period = 1.0 / f;
+      iarg += 2;
+    } else if (key == "t_start") {
+      gp.motion.t_start = number(key, 1), iarg += 2;
+    } else if (key == "dwell_out") {
+      gp.motion.dwell_out = number(key, 1), iarg += 2;
+    } else if (key == "dwell_home") {
+      gp.motion.dwell_home = number(key, 1), iarg += 2;
+    } else if (key == "forward_share") {
+      gp.motion.forward_share = number(key, 1), iarg += 2;
+    } else if (key == "ramp") {
+      gp.motion.ramp = number(key, 1), iarg += 2;
+    } else if (key == "vtk") {
+      const long n = integer(key, 1);
+      if (n < 1)
+        error->all(FLERR, where + ": keyword 'vtk' N = " + arg[iarg + 1] +
+                              " is outside the allowed range [1, inf) (steps between VTK files)");
+      vtk_every = static_cast<int>(n);
+      vtk_prefix = value(key, 2);
+      iarg += 3;
+    } else if (key == "max_contacts") {
+      const long k = integer(key, 1);
+      if (k < 1 || k > 64)
+        error->all(FLERR, where + ": keyword 'max_contacts' = " + arg[iarg + 1] +
+                              " is outside the allowed range [1, 64]");
+      max_contacts = static_cast<int>(k);
+      iarg += 2;
+    } else {
+      error->all(FLERR, where + ": unknown keyword '" + key + "'; allowed after the law: " +
+                            GRATE_KEYWORDS);
+    }
+  }
+
+  // 2D: frame xy (up +y, width along z) with dimension 2
+  if (domain->dimension == 2) {
+    if (frame_given && gp.frame != tg::Frame::xy)
+      error->all(FLERR, where + ": keyword 'frame' = 'xyz' is not allowed with dimension 2; "
+                                "allowed: xy");
+    gp.frame = tg::Frame::xy;
+  } else if (!frame_given) {
+    gp.frame = tg::Frame::xyz;
+  }
+
+  // the phase groups checked here with this fix's keyword names (the core says 'moving', 'phase')
+  if (!gp.row_group.empty() && static_cast<int>(gp.row_group.size()) != gp.rows)
+    error->all(FLERR, where + ": keyword 'row_group' has " + std::to_string(gp.row_group.size()) +
+                          " values; allowed: one entry per row (rows = " + std::to_string(gp.rows) + ")");
+  {
+    int ng = gp.row_group.empty() ? (gp.rows > 1 ? 1 : 0) : 0;
+    for (int g : gp.row_group) ng = std::max(ng, g + 1);
+    for (double ph : gp.group_phase)
+      if (!(ph >= 0.0 && ph < 1.0))
+        error->all(FLERR, where + ": keyword 'group_phase' = " + std::to_string(ph) +
+                              " is outside the allowed range [0, 1) (fraction of the period)");
+    if (!gp.group_phase.empty() && static_cast<int>(gp.group_phase.size()) < ng)
+      error->all(FLERR, where + ": keyword 'group_phase' has " + std::to_string(gp.group_phase.size()) +
+                            " values; allowed: one value per phase group (row_group uses " +
+                            std::to_string(ng) + " groups)");
+  }
+
+  try {
+    grate_ = std::make_unique<tg::Grate>(gp);
+  } catch (const std::invalid_argument &ex) {
+    error->all(FLERR, where + ": " + ex.what());
+  }
+
+  // a periodic width should equal the grate width (otherwise particles fall off the bar ends)
+  const tg::GrateParams &p = grate_->params();
+  if (p.frame == tg::Frame::xyz && !p.side_walls && comm->me == 0) {
+    if (!domain->yperiodic)
+      error->warning(FLERR, where + ": no side walls and y is not periodic: particles can leave "
+                                    "the grate sideways");
+    else if (std::fabs(domain->prd[1] - p.width) > 1e-9 * p.width)
+      error->warning(FLERR, where + ": the periodic box length along y (" +
+                                std::to_string(domain->prd[1]) + ") differs from the grate width (" +
+                                std::to_string(p.width) + ")");
+  }
+
+  ngroups = static_cast<int>(p.group_phase.size());
+  vector_flag = 1;
+  size_vector = 3 + 2 * ngroups;
+  global_freq = 1;
+  extvector = -1;
+  extlist_store.assign(size_vector, 0);
+  extlist_store[0] = extlist_store[1] = extlist_store[2] = 1;
+  extlist = extlist_store.data();
+
+  slot_size = 1 + size_history;
+  width = max_contacts * slot_size;
+  boxes_ = grate_->boxes(0.0);
+  // half extents of the axis-aligned bounding box of each box (the boxes only translate)
+  for (const auto &b : boxes_)
+    for (int k = 0; k < 3; ++k)
+      box_extent.push_back(std::fabs(b.axis[0][k]) * b.half[0] + std::fabs(b.axis[1][k]) * b.half[1] +
+                           std::fabs(b.axis[2][k]) * b.half[2]);
+
+  // time origin: the step of definition (restart() replaces it by the stored one)
+  t_base = 0.0;
+  step_base = update->ntimestep;
+  dt_cur = update->dt;
+  t_last = 0.0;
+
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
+  for (int i = 0; i < atom->nlocal; i++) set_arrays(i);
+}
+
+FixTDEMGrate::~FixTDEMGrate()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+  memory->destroy(slots);
+  memory->destroy(mass_rigid);
+  extlist = nullptr;  // owned by extlist_store
+}
+
+int FixTDEMGrate::setmask()
+{
+  int mask = 0;
+  mask |= POST_FORCE;
+  mask |= POST_FORCE_RESPA;
+  return mask;
+}
+
+double FixTDEMGrate::current_time() const
+{
+  return t_base + static_cast<double>(update->ntimestep - step_base) * dt_cur;
+}
+
+void FixTDEMGrate::rebase_time()
+{
+  // the time elapsed so far ran with dt_cur; continue with the new step from here
+  if (update->dt == dt_cur) return;
+  t_base = current_time();
+  step_base = update->ntimestep;
+  dt_cur = update->dt;
+}
+
+void FixTDEMGrate::init()
+{
+  rebase_time();
+  if (utils::strmatch(update->integrate_style, "^respa"))
+    nlevels_respa = ((Respa *) update->integrate)->nlevels;
+  fix_rigid = nullptr;
+  for (int i = 0; i < modify->nfix; i++)
+    if (modify->fix[i]->rigid_flag) {
+      fix_rigid = modify->fix[i];
+      break;
+    }
+}
+
+void FixTDEMGrate::reset_dt()
+{
+  rebase_time();
+}
+
+void FixTDEMGrate::setup(int vflag)
+{
+  if (utils::strmatch(update->integrate_style, "^verlet"))
+    post_force(vflag);
+  else {
+    ((Respa *) update->integrate)->copy_flevel_f(nlevels_respa - 1);
+    post_force_respa(vflag, nlevels_respa - 1, 0);
+    ((Respa *) update->integrate)->copy_f_flevel(nlevels_respa - 1);
+  }
+}
+
+void FixTDEMGrate::write_vtk(double t)
+{
+  if (comm->me != 0) return;
+  const std::string path = vtk_prefix + "_" + std::to_string(update->ntimestep) + ".vtk";
+  try {
+    tg::write_vtk_file(path, boxes_, t);
+  } catch (const std::exception &ex) {
+    error->one(FLERR, where + ": " + ex.what());
+  }
+}
+
+namespace {
+struct GrateRunner {
+  FixTDEMGrate *f;
+  template <int M, int E, int S, int TL = 0> void run() { f->template eval<M, E, S, TL>(); }
+};
+}  // namespace
+
+void FixTDEMGrate::post_force(int /*vflag*/)
+{
+  if (fix_rigid) {
+    // effective mass of a sphere of a rigid body: the body mass (as fix wall/gran)
+    int tmp;
+    int *body = (int *) fix_rigid->extract("body", tmp);
+    double *mass_body = (double *) fix_rigid->extract("masstotal", tmp);
+    if (atom->nmax > nmax_rigid) {
+      memory->destroy(mass_rigid);
+      nmax_rigid = atom->nmax;
+      memory->create(mass_rigid, nmax_rigid, "tdem/grate:mass_rigid");
+    }
+    for (int i = 0; i < atom->nlocal; i++)
+      mass_rigid[i] = (body && mass_body && body[i] >= 0) ? mass_body[body[i]] : 0.0;
+  }
+
+  const double t = current_time();
+  t_last = t;
+  const int wa = grate_->width_axis();
+  const int periodic[3] = {domain->xperiodic, domain->yperiodic, domain->zperiodic};
+  per_axis = periodic[wa] ? wa : -1;
+  per_len = domain->prd[wa];
+  boxes_ = grate_->boxes(t);
+  force_flag = 0;
+  fbar[0] = fbar[1] = fbar[2] = 0.0;
+  tdem_lammps::dispatch(true, law.mode, law.end, law.slip, law.tlaw, GrateRunner{this});
+
+  if (vtk_every && (update->setupflag || update->ntimestep % vtk_every == 0)) write_vtk(t);
+}
+
+namespace {
+// One candidate contact of a sphere with a box.
+struct Candidate {
+  int box;
+  double overlap;
+  double n[3];  // unit normal from the box towards the sphere centre
+  double q[3];  // contact point on the box surface
+};
+
+// Is p within the closed box b (enlarged by eps)?
+inline bool within(const tg::Box &b, const double *p, double eps, int per_axis, double per_len)
+{
+  tg::Vec3 d{p[0] - b.centre.x, p[1] - b.centre.y, p[2] - b.centre.z};
+  if (per_axis >= 0) d[per_axis] -= per_len * std::nearbyint(d[per_axis] / per_len);
+  for (int k = 0; k < 3; ++k)
+    if (std::fabs(tg::dot(d, b.axis[k])) > b.half[k] + eps) return false;
+  return true;
+}
+}  // namespace
+
+template <int M, int E, int S, int TL>
+__attribute__((flatten, noinline)) void FixTDEMGrate::eval()
+{
+  const bool history_update = !update->setupflag;
+  const double dt = update->dt;
+
+  double **x = atom->x;
+  double **v = atom->v;
+  double **f = atom->f;
+  double **omg = atom->omega;
+  double **torque = atom->torque;
+  double *radius = atom->radius;
+  double *rmass = atom->rmass;
+  int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+  const int nbox = static_cast<int>(boxes_.size());
+  // bounding box of the whole grate; the axes tested first are the non-periodic ones
+  double all_lo[3], all_hi[3];
+  for (int k = 0; k < 3; ++k) all_lo[k] = 1e300, all_hi[k] = -1e300;
+  for (int b = 0; b < nbox; ++b)
+    for (int k = 0; k < 3; ++k) {
+      all_lo[k] = std::min(all_lo[k], boxes_[b].centre[k] - box_extent[3 * b + k]);
+      all_hi[k] = std::max(all_hi[k], boxes_[b].centre[k] + box_extent[3 * b + k]);
+    }
+  const int ax_c = per_axis >= 0 ? per_axis : 2;  // tested last (after the minimum image)
+  const int ax_a = ax_c == 0 ? 1 : 0;
+  const int ax_b = 3 - ax_a - ax_c;
+
+  std::vector<Candidate> cand;
+  cand.reserve(nbox);
+  std::vector<int> accepted;
+  accepted.reserve(nbox);
+  std::vector<char> used(max_contacts);
+
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    const double rad = radius[i];
+    const tg::Vec3 xi{x[i][0], x[i][1], x[i][2]};
+    double *sl = slots[i];
+
+    // ---- candidate contacts: the bounding box of the whole grate first (an atom above the
+    // bed's lowest layer stops here), then the bounding box of each box, then its closest point.
+    // Along a periodic width axis the atom's image nearest to the box centre counts (bars with
+    // lateral gaps reach across the periodic boundary).
+    cand.clear();
+    bool near = true;
+    for (int k = 0; k < 3; ++k)
+      if (k != per_axis && (xi[k] < all_lo[k] - rad || xi[k] > all_hi[k] + rad)) near = false;
+    for (int b = 0; near && b < nbox; ++b) {
+      const tg::Box &bx = boxes_[b];
+      const double *ext = &box_extent[3 * b];  // half extents of the axis-aligned bounding box
+      tg::Vec3 d = xi - bx.centre;
+      if (std::fabs(d[ax_a]) > ext[ax_a] + rad || std::fabs(d[ax_b]) > ext[ax_b] + rad) continue;
+      if (per_axis >= 0) d[per_axis] -= per_len * std::nearbyint(d[per_axis] / per_len);
+      if (std::fabs(d[ax_c]) > ext[ax_c] + rad) continue;
+      double s[3];
+      bool inside = true, away = false;
+      for (int k = 0; k < 3; ++k) {
+        s[k] = tg::dot(d, bx.axis[k]);
+        if (std::fabs(s[k]) > bx.half[k] + rad) away = true;
+        if (std::fabs(s[k]) > bx.half[k]) inside = false;
+      }
+      if (away) continue;
+      Candidate c;
+      c.box = b;
+      if (!inside) {
+        // closest point of the box, relative to its centre; dq = centre of the sphere - it
+        tg::Vec3 dq = d;
+        for (int k = 0; k < 3; ++k) {
+          const double sk = std::max(-bx.half[k], std::min(bx.half[k], s[k]));
+          dq = dq - sk * bx.axis[k];
+        }
+        const double dist = tg::norm(dq);
+        if (!(dist < rad) || dist <= 0.0) continue;
+        c.overlap = rad - dist;
+        c.n[0] = dq.x / dist, c.n[1] = dq.y / dist, c.n[2] = dq.z / dist;
+        c.q[0] = xi.x - dq.x, c.q[1] = xi.y - dq.y, c.q[2] = xi.z - dq.z;
+      } else {
+        // centre inside the box (a broken state: far too deep): push out through the
+        // nearest face
+        int kmin = 0;
+        double pmin = bx.half[0] - std::fabs(s[0]);
+        for (int k = 1; k < 3; ++k) {
+          const double pk = bx.half[k] - std::fabs(s[k]);
+          if (pk < pmin) pmin = pk, kmin = k;
+        }
+        const double sg = s[kmin] >= 0.0 ? 1.0 : -1.0;
+        const tg::Vec3 nn = sg * bx.axis[kmin];
+        c.overlap = rad + pmin;
+        c.n[0] = nn.x, c.n[1] = nn.y, c.n[2] = nn.z;
+        const tg::Vec3 q = xi + pmin * nn;
+        c.q[0] = q.x, c.q[1] = q.y, c.q[2] = q.z;
+        if (ndeep++ == 0)
+          error->warning(FLERR, where + ": the centre of atom " + std::to_string(atom->tag[i]) +
+                                    " is inside a box at step " + std::to_string(update->ntimestep) +
+                                    " (time step too large or bars too fast); pushed out through "
+                                    "the nearest face (reported once per rank)");
+      }
+      cand.push_back(c);
+    }
+
+    if (cand.empty()) {  // no contact: free the slots still held
+      for (int s = 0; s < max_contacts; ++s)
+        if (sl[s * slot_size] >= 0.0) {
+          sl[s * slot_size] = -1.0;
+          for (int m = 1; m < slot_size; ++m) sl[s * slot_size + m] = 0.0;
+        }
+      continue;
+    }
+
+    // ---- accept in order of decreasing overlap; a contact point hidden inside a box already
+    // accepted is not an exposed face (shared edges of neighbouring bars, roof-tile overlaps)
+    for (size_t a = 1; a < cand.size(); ++a)
+      for (size_t b = a; b > 0 && (cand[b].overlap > cand[b - 1].overlap ||
+                                   (cand[b].overlap == cand[b - 1].overlap &&
+                                    cand[b].box < cand[b - 1].box));
+           --b)
+        std::swap(cand[b], cand[b - 1]);
+    accepted.clear();
+    const double eps = 1e-9 * rad;
+    for (size_t a = 0; a < cand.size(); ++a) {
+      bool hidden = false;
+      for (int acc : accepted)
+        if (within(boxes_[cand[acc].box], cand[a].q, eps, per_axis, per_len)) {
+          hidden = true;
+          break;
+        }
+      if (!hidden) accepted.push_back(static_cast<int>(a));
+    }
+
+    // ---- history slots: keep those of the accepted boxes, free the others
+    for (int s = 0; s < max_contacts; ++s) used[s] = 0;
+    for (int acc : accepted) {
+      const Candidate &c = cand[acc];
+      int slot = -1;
+      for (int s = 0; s < max_contacts; ++s)
+        if (static_cast<int>(sl[s * slot_size]) == c.box) {
+          slot = s;
+          break;
+        }
+      if (slot < 0) {
+        for (int s = 0; s < max_contacts; ++s)
+          if (sl[s * slot_size] < 0.0 && !used[s]) {
+            slot = s;
+            break;
+          }
+        if (slot < 0)
+          error->one(FLERR, where + ": atom " + std::to_string(atom->tag[i]) + " touches " +
+                                std::to_string(accepted.size()) + " boxes at step " +
+                                std::to_string(update->ntimestep) + ", more than max_contacts = " +
+                                std::to_string(max_contacts) + "; increase max_contacts");
+        sl[slot * slot_size] = c.box;
+        for (int m = 1; m < slot_size; ++m) sl[slot * slot_size + m] = 0.0;
+      }
+      used[slot] = 1;
+    }
+    for (int s = 0; s < max_contacts; ++s)
+      if (!used[s] && sl[s * slot_size] >= 0.0) {
+        sl[s * slot_size] = -1.0;
+        for (int m = 1; m < slot_size; ++m) sl[s * slot_size + m] = 0.0;
+      }
+
+    if (accepted.empty()) continue;
+    double meff = rmass[i];
+    if (fix_rigid && mass_rigid && mass_rigid[i] > 0.0) meff = mass_rigid[i];
+
+    // ---- forces, one contact per accepted box (a plane wall moving with the box)
+    for (int acc : accepted) {
+      const Candidate &c = cand[acc];
+      const tg::Box &bx = boxes_[c.box];
+      double *shear = nullptr;
+      for (int s = 0; s < max_contacts; ++s)
+        if (static_cast<int>(sl[s * slot_size]) == c.box) {
+          shear = sl + s * slot_size + 1;
+          break;
+        }
+      // del = centre - contact point, |del| = rad - overlap (kept positive for a centre that
+      // sits inside a box; the forces depend on the direction of del and on the overlap only)
+      const double r = std::max(rad - c.overlap, 1e-6 * rad);
+      const double dx = c.n[0] * r, dy = c.n[1] * r, dz = c.n[2] * r;
+      const double rinv = 1.0 / r;
+      const double rsqinv = rinv * rinv;
+      const double vr1 = v[i][0] - bx.velocity.x;
+      const double vr2 = v[i][1] - bx.velocity.y;
+      const double vr3 = v[i][2] - bx.velocity.z;
+      const double wr1 = rad * omg[i][0] * rinv;
+      const double wr2 = rad * omg[i][1] * rinv;
+      const double wr3 = rad * omg[i][2] * rinv;
+
+      double ccel, fs[3];
+      tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv,
+                                                 c.overlap, vr1, vr2, vr3, wr1, wr2, wr3, dt,
+                                                 history_update, shear, ccel, fs, rad, 0.0, omg[i],
+                                                 nullptr);
+      const double fx = dx * ccel + fs[0];
+      const double fy = dy * ccel + fs[1];
+      const double fz = dz * ccel + fs[2];
+      f[i][0] += fx;
+      f[i][1] += fy;
+      f[i][2] += fz;
+      fbar[0] -= fx;
+      fbar[1] -= fy;
+      fbar[2] -= fz;
+      const double tor1 = rinv * (dy * fs[2] - dz * fs[1]);
+      const double tor2 = rinv * (dz * fs[0] - dx * fs[2]);
+      const double tor3 = rinv * (dx * fs[1] - dy * fs[0]);
+      torque[i][0] -= rad * tor1;
+      torque[i][1] -= rad * tor2;
+      torque[i][2] -= rad * tor3;
+    }
+  }
+}
+
+void FixTDEMGrate::post_force_respa(int vflag, int ilevel, int /*iloop*/)
+{
+  if (ilevel == nlevels_respa - 1) post_force(vflag);
+}
+
+double FixTDEMGrate::compute_vector(int n)
+{
+  if (n < 3) {
+    if (!force_flag) {
+      MPI_Allreduce(fbar, fbar_all, 3, MPI_DOUBLE, MPI_SUM, world);
+      force_flag = 1;
+    }
+    return fbar_all[n];
+  }
+  // displacement u and velocity of phase group g at the last force evaluation
+  const int g = (n - 3) / 2;
+  const tg::MotionState m =
+      tg::evaluate(grate_->params().motion, t_last, grate_->params().group_phase[g]);
+  return ((n - 3) % 2 == 0) ? m.u : m.v;
+}
+
+void *FixTDEMGrate::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (strcmp(name, "tdem_grate") == 0) return (void *) grate_.get();
+  if (strcmp(name, "tdem_grate_time") == 0) return (void *) &t_last;
+  return nullptr;
+}
+
+double FixTDEMGrate::memory_usage()
+{
+  return (double) atom->nmax * width * sizeof(double) + (double) nmax_rigid * sizeof(double);
+}
+
+void FixTDEMGrate::grow_arrays(int n)
+{
+  memory->grow(slots, n, width, "tdem/grate:slots");
+}
+
+void FixTDEMGrate::copy_arrays(int i, int j, int /*delflag*/)
+{
+  for (int m = 0; m < width; m++) slots[j][m] = slots[i][m];
+}
+
+void FixTDEMGrate::set_arrays(int i)
+{
+  for (int s = 0; s < max_contacts; s++) {
+    slots[i][s * slot_size] = -1.0;
+    for (int m = 1; m < slot_size; m++) slots[i][s * slot_size + m] = 0.0;
+  }
+}
+
+int FixTDEMGrate::pack_exchange(int i, double *buf)
+{
+  for (int m = 0; m < width; m++) buf[m] = slots[i][m];
+  return width;
+}
+
+int FixTDEMGrate::unpack_exchange(int nlocal, double *buf)
+{
+  for (int m = 0; m < width; m++) slots[nlocal][m] = buf[m];
+  return width;
+}
+
+// global restart: the grate time origin and the layout of the per-atom slots
+void FixTDEMGrate::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  double list[6] = {t_base, static_cast<double>(step_base), dt_cur,
+                    static_cast<double>(boxes_.size()), static_cast<double>(size_history),
+                    static_cast<double>(max_contacts)};
+  int size = sizeof(list);
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(list, sizeof(list), 1, fp);
+}
+
+void FixTDEMGrate::restart(char *buf)
+{
+  const double *list = (const double *) buf;
+  t_base = list[0];
+  step_base = static_cast<bigint>(list[1]);
+  dt_cur = list[2];
+  const int nbox = static_cast<int>(list[3]);
+  const int hs = static_cast<int>(list[4]);
+  if (nbox != static_cast<int>(boxes_.size()) || hs != size_history)
+    error->all(FLERR, where + ": the restart file holds contact histories of " +
+                          std::to_string(nbox) + " boxes with " + std::to_string(hs) +
+                          " history values each, this fix has " + std::to_string(boxes_.size()) +
+                          " boxes with " + std::to_string(size_history) +
+                          "; define the grate and the law as before the restart (or use a new fix ID)");
+}
+
+int FixTDEMGrate::pack_restart(int i, double *buf)
+{
+  // buf[0] = number of values including itself, as every per-atom restart fix
+  int n = 0;
+  buf[n++] = width + 1;
+  for (int m = 0; m < width; m++) buf[n++] = slots[i][m];
+  return n;
+}
+
+void FixTDEMGrate::unpack_restart(int nlocal, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
+  const int count = static_cast<int>(extra[nlocal][m]) - 1;
+  m++;
+  set_arrays(nlocal);
+  // the stored number of slots may differ from max_contacts: keep the occupied ones
+  const int stored = count / slot_size;
+  int k = 0;
+  for (int s = 0; s < stored; s++) {
+    const double *src = &extra[nlocal][m + s * slot_size];
+    if (src[0] < 0.0) continue;
+    if (k >= max_contacts)
+      error->one(FLERR, where + ": atom " + std::to_string(atom->tag[nlocal]) +
+                            " has more contacts in the restart file than max_contacts = " +
+                            std::to_string(max_contacts));
+    for (int q = 0; q < slot_size; q++) slots[nlocal][k * slot_size + q] = src[q];
+    ++k;
+  }
+}
+
+int FixTDEMGrate::maxsize_restart()
+{
+  return 1 + width;
+}
+
+int FixTDEMGrate::size_restart(int /*nlocal*/)
+{
+  return 1 + width;
+}
