@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LIGGGHTS: registration of the styles of the module 'timestep'.
+// tdem for LIGGGHTS: registration of the styles of the module 'timestep' (fix tdem/timestep).
 #include "tdem_liggghts.h"
 
 namespace tdem {
 namespace liggghts {
 
-void register_timestep(LAMMPS_NS::LAMMPS* lmp) { (void)lmp; }
+void register_timestep_fix(LAMMPS_NS::LAMMPS* lmp);  // fix_tdem_timestep.cpp
+
+void register_timestep(LAMMPS_NS::LAMMPS* lmp) { register_timestep_fix(lmp); }
 
 }  // namespace liggghts
 }  // namespace tdem

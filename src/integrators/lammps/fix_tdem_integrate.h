@@ -63,6 +63,8 @@ class FixTDEMIntegrate : public Fix {
 
   // doubles of history per atom (without the flag) for a scheme (for docs and tests)
   int history_doubles() const { return nhist_t + nhist_r; }
+  // the scheme in use (for fix tdem/timestep)
+  tdem::integrators::Scheme scheme_in_use() const { return scheme; }
 
  private:
   tdem::integrators::Scheme scheme;

@@ -48,6 +48,8 @@ class FixTdemIntegrate : public Fix {
   int setmask();
   void init();
   void setup(int);
+  // the scheme in use (for fix tdem/timestep)
+  tdem::integrators::Scheme scheme_in_use() const { return scheme_; }
   void initial_integrate(int);
   void final_integrate();
   void reset_dt();

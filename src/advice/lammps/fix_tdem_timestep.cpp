@@ -1,0 +1,438 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: fix tdem/timestep (see fix_tdem_timestep.h and docs/timestep.md).
+#include "fix_tdem_timestep.h"
+
+#include "atom.h"
+#include "comm.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair.h"
+#include "update.h"
+
+#include "fix_tdem_wall_gran.h"
+#include "fix_tdem_integrate.h"
+#include "pair_tdem_gran.h"
+#include "tdem_lammps_law.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace ta = tdem::advice;
+namespace th = tdem::advice::host;
+namespace ti = tdem::integrators;
+
+namespace {
+
+constexpr double BIG = std::numeric_limits<double>::max();
+
+// The law of a tdem type pair (or wall: reff = sphere radius) as the two functions of a row.
+void law_row(const tdem_lammps::LawCoeffs &c, th::Row &r)
+{
+  using namespace tdem_lammps;
+  const double meff = r.meff, reff = r.reff;
+  const tdem::ContactEnd end = contact_end(c.end);
+  r.law = describe_law(c);
+  switch (c.mode) {
+    case MODE_STIFFNESS_MASS:
+    case MODE_STIFFNESS_ABS: {
+      const tdem::lsd::Coefficients<double> k{c.kn, c.mode == MODE_STIFFNESS_MASS ? meff * c.gamman : c.gamman};
+      r.advise = [k, end](const ta::Input &in) { return ta::for_linear(k, end, in); };
+      break;
+    }
+    case MODE_RESTITUTION: {
+      const tdem::lsd::MassRates<double> m{c.k_per_mass, c.gamma_per_mass};
+      r.advise = [m, end](const ta::Input &in) { return ta::for_linear(m, end, in); };
+      break;
+    }
+    case MODE_HERTZ: {
+      const tdem::hertz::Params<double> p{tdem::hertz::stiffness(c.estar, reff), c.hgamma, c.htheta};
+      const tdem::hertz::Damping d = hertz_damping(c.hdamp);
+      r.advise = [p, d, end](const ta::Input &in) { return ta::for_hertz(d, end, p, in); };
+      r.stiffness = [p, d, end, meff, reff](double xi, double &k, double &g) {
+        const auto res = tdem::hertz::force(d, end, p, tdem::NormalKinematics<double>{xi, 0.0, meff, reff});
+        k = res.stiffness, g = res.damping;
+        return true;
+      };
+      break;
+    }
+    case MODE_WALTON_BRAUN: {
+      const tdem::walton_braun::Params<double> p{c.wb_kl, c.wb_ku, c.wb_s};
+      r.advise = [p](const ta::Input &in) { return ta::for_walton_braun(p, in); };
+      r.stiffness = [p](double xi, double &k, double &g) {  // unloading from F_max = k_l xi
+        k = p.k_unload + p.slope * p.k_load * xi, g = 0.0;
+        return true;
+      };
+      break;
+    }
+    case MODE_THORNTON: {
+      const tdem::thornton::Params<double> p{c.estar, c.th_py};
+      r.advise = [p](const ta::Input &in) { return ta::for_thornton(p, in); };
+      r.stiffness = [p, reff](double xi, double &k, double &g) {  // elastic unloading tangent
+        k = 2.0 * p.e_star * std::sqrt(reff * xi), g = 0.0;
+        return true;
+      };
+      break;
+    }
+    case MODE_POWER_LAW: {
+      const tdem::power_law::Params<double> p = c.pl;
+      r.advise = [p](const ta::Input &in) { return ta::for_power_law(p, in); };
+      r.stiffness = [p](double xi, double &k, double &g) {  // as the core at xi_max = xi
+        const double f = p.a_load * std::pow(xi, p.p);
+        const double d = tdem::power_law::unloading_amplitude(p, xi);
+        k = p.p * f / xi;
+        if (d <= xi) k = std::max(k, (p.p + p.q) * f / d);
+        g = 0.0;
+        return true;
+      };
+      break;
+    }
+    case MODE_EXT_LINEAR: {
+      const tdem::extended::LinearParams p = c.ext;
+      r.advise = [p, end](const ta::Input &in) { return ta::for_extended_linear(end, p, in); };
+      break;
+    }
+    case MODE_EXT_HERTZ: {
+      const tdem::extended::HertzParams p{tdem::hertz::stiffness(c.estar, reff), c.ext.e_fit, c.ext.range};
+      r.advise = [p, end](const ta::Input &in) { return ta::for_extended_hertz(end, p, in); };
+      break;
+    }
+    default:
+      r.supported = false;
+  }
+}
+
+// Material of the particle with the smaller Rayleigh time of the two (E, nu known: Hertz-type laws)
+ta::Material smaller_rayleigh(const ta::Material &a, const ta::Material &b)
+{
+  if (!a.given()) return b;
+  if (!b.given()) return a;
+  try {
+    return ta::rayleigh_time(a) <= ta::rayleigh_time(b) ? a : b;
+  } catch (const std::exception &) {
+    return a;
+  }
+}
+
+bool has_material(int mode)
+{
+  using namespace tdem_lammps;
+  return mode == MODE_HERTZ || mode == MODE_THORNTON || mode == MODE_EXT_HERTZ;
+}
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixTDEMTimestep::FixTDEMTimestep(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), scheme(ti::Scheme::velocity_verlet), runtime_warned(false)
+{
+  try {
+    opt = th::parse_options(narg, arg, 3);
+  } catch (const std::exception &e) {
+    error->all(FLERR, fmt::format("fix {} tdem/timestep: {}", id, e.what()));
+  }
+  if (!atom->sphere_flag)
+    error->all(FLERR, fmt::format("fix {} tdem/timestep requires atom style sphere (radius and rmass)", id));
+  vector_flag = 1;
+  size_vector = 3;
+  global_freq = 1;
+  extvector = 0;
+  nevery = opt.every > 0 ? static_cast<int>(opt.every) : 1;
+  vec[0] = vec[1] = vec[2] = 0.0;
+  last_step = -1;
+}
+
+int FixTDEMTimestep::setmask()
+{
+  return opt.every > 0 ? END_OF_STEP : 0;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMTimestep::init()
+{
+  // the scheme: `scheme`, else the one of a fix tdem/integrate on the group, else nve/sphere
+  scheme = opt.scheme;
+  if (opt.scheme_given) return;
+  scheme = ti::Scheme::velocity_verlet;
+  for (int i = 0; i < modify->nfix; i++) {
+    Fix *f = modify->fix[i];
+    if (strcmp(f->style, "tdem/integrate") != 0) continue;
+    auto *fi = dynamic_cast<FixTDEMIntegrate *>(f);
+    if (!fi) continue;
+    scheme = fi->scheme_in_use();
+    break;
+  }
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMTimestep::type_minima(int mask_bits, std::vector<double> &mmin, std::vector<double> &rmin,
+                                  std::vector<double> &rhomin)
+{
+  const int nt = atom->ntypes;
+  std::vector<double> loc(3 * (nt + 1), BIG);
+  const int nlocal = atom->nlocal;
+  for (int i = 0; i < nlocal; i++) {
+    if ((atom->mask[i] & mask_bits) != mask_bits) continue;
+    const int t = atom->type[i];
+    const double m = atom->rmass[i], r = atom->radius[i];
+    if (!(r > 0.0)) continue;
+    loc[t] = std::min(loc[t], m);
+    loc[nt + 1 + t] = std::min(loc[nt + 1 + t], r);
+    loc[2 * (nt + 1) + t] = std::min(loc[2 * (nt + 1) + t], m / (4.0 / 3.0 * M_PI * r * r * r));
+  }
+  std::vector<double> all(loc.size());
+  MPI_Allreduce(loc.data(), all.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MIN, world);
+  mmin.assign(all.begin(), all.begin() + nt + 1);
+  rmin.assign(all.begin() + nt + 1, all.begin() + 2 * (nt + 1));
+  rhomin.assign(all.begin() + 2 * (nt + 1), all.end());
+}
+
+double FixTDEMTimestep::largest_speed()
+{
+  double v2 = 0.0;
+  double **v = atom->v;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) v2 = std::max(v2, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+  double all = 0.0;
+  MPI_Allreduce(&v2, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return std::sqrt(all);
+}
+
+// The largest overlap per type pair among the pairs of the pair style's neighbour list.
+void FixTDEMTimestep::largest_overlaps(std::vector<double> &xi)
+{
+  const int nt = atom->ntypes;
+  std::vector<double> loc((nt + 1) * (nt + 1), 0.0);
+  NeighList *list = force->pair ? force->pair->list : nullptr;
+  if (list && list->inum > 0 && list->ilist) {
+    double **x = atom->x;
+    const double *rad = atom->radius;
+    const int *type = atom->type, *mask = atom->mask;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      if (!(mask[i] & groupbit)) continue;
+      const int *jl = list->firstneigh[i];
+      for (int jj = 0; jj < list->numneigh[i]; jj++) {
+        const int j = jl[jj] & NEIGHMASK;
+        if (!(mask[j] & groupbit)) continue;
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+        const double ov = rad[i] + rad[j] - std::sqrt(dx * dx + dy * dy + dz * dz);
+        if (ov <= 0.0) continue;
+        const int a = std::min(type[i], type[j]), b = std::max(type[i], type[j]);
+        loc[a * (nt + 1) + b] = std::max(loc[a * (nt + 1) + b], ov);
+      }
+    }
+  }
+  xi.assign(loc.size(), 0.0);
+  MPI_Allreduce(loc.data(), xi.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MAX, world);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMTimestep::build_rows(double v_setup)
+{
+  rows.clear();
+  const int nt = atom->ntypes;
+  std::vector<double> mmin, rmin, rhomin;
+  type_minima(groupbit, mmin, rmin, rhomin);
+  auto present = [&](int t) { return mmin[t] < BIG && rmin[t] < BIG; };
+
+  // the pair style
+  Pair *pair = force->pair;
+  auto *tp = dynamic_cast<PairTDEMGran *>(pair);
+  const char *pstyle = force->pair_style ? force->pair_style : "none";
+  const bool stock_hooke = pair && (!strcmp(pstyle, "gran/hooke/history") || !strcmp(pstyle, "gran/hooke"));
+  const bool stock_hertz = pair && !strcmp(pstyle, "gran/hertz/history");
+  double stock[5] = {0, 0, 0, 0, 0};  // kn kt gamman gammat xmu (the pair's restart settings)
+  if (stock_hooke || stock_hertz) {
+    if (comm->me == 0) {
+      char buf[256] = {0};
+      FILE *fp = fmemopen(buf, sizeof buf, "w+b");
+      if (fp) {
+        pair->write_restart_settings(fp);
+        fflush(fp);
+        memcpy(stock, buf, sizeof stock);
+        fclose(fp);
+      }
+    }
+    MPI_Bcast(stock, 5, MPI_DOUBLE, 0, world);
+  }
+  if (pair && !tp && !stock_hooke && !stock_hertz && comm->me == 0)
+    error->warning(FLERR, fmt::format("fix {} tdem/timestep: pair style {} is not supported (supported: tdem/gran, "
+                                      "gran/hooke, gran/hooke/history, gran/hertz/history); no advice for its contacts",
+                                      id, pstyle));
+  if (tp || stock_hooke || stock_hertz) {
+    for (int i = 1; i <= nt; i++)
+      for (int j = i; j <= nt; j++) {
+        if (!present(i) || !present(j)) continue;
+        th::Row r;
+        r.what = fmt::format("pair {} {}", i, j);
+        r.itype = i, r.jtype = j;
+        r.meff = mmin[i] * mmin[j] / (mmin[i] + mmin[j]);
+        r.reff = rmin[i] * rmin[j] / (rmin[i] + rmin[j]);
+        if (tp) {
+          const tdem_lammps::LawCoeffs &c = tp->law_of(i, j);
+          law_row(c, r);
+          if (has_material(c.mode))
+            r.material = smaller_rayleigh(ta::Material{rmin[i], rhomin[i], c.E1, c.nu1},
+                                          ta::Material{rmin[j], rhomin[j], c.E2, c.nu2});
+        } else if (stock_hooke) {
+          // F = kn xi + m* gamman xi_dot
+          const tdem::lsd::Coefficients<double> k{stock[0], r.meff * stock[2]};
+          r.law = fmt::format("{} kn {} gamman {}", pstyle, stock[0], stock[2]);
+          r.advise = [k](const ta::Input &in) { return ta::for_linear(k, tdem::ContactEnd::zero_overlap, in); };
+        } else {
+          // F = sqrt(R* xi) (kn xi + m* gamman xi_dot): Hertz k~ = kn sqrt(R*), Kuwabara-Kono
+          // damping c = m* gamman sqrt(R*) sqrt(xi)
+          const tdem::hertz::Params<double> p{stock[0] * std::sqrt(r.reff), r.meff * stock[2] * std::sqrt(r.reff),
+                                              0.0};
+          const double meff = r.meff, reff = r.reff;
+          r.law = fmt::format("{} kn {} gamman {}", pstyle, stock[0], stock[2]);
+          r.advise = [p](const ta::Input &in) {
+            ta::Advice a = ta::for_hertz(tdem::hertz::Damping::kuwabara_kono, tdem::ContactEnd::zero_overlap, p, in);
+            return a;
+          };
+          r.stiffness = [p, meff, reff](double xi, double &k, double &g) {
+            const auto res = tdem::hertz::force(tdem::hertz::Damping::kuwabara_kono, tdem::ContactEnd::zero_overlap,
+                                                p, tdem::NormalKinematics<double>{xi, 0.0, meff, reff});
+            k = res.stiffness, g = res.damping;
+            return true;
+          };
+        }
+        rows.push_back(r);
+      }
+  }
+
+  // tdem walls (the sphere against an infinitely heavy and large wall: m* = m, R* = R)
+  for (int k = 0; k < modify->nfix; k++) {
+    auto *w = dynamic_cast<FixTDEMWallGran *>(modify->fix[k]);
+    if (!w) {
+      if (strstr(modify->fix[k]->style, "wall/gran") && comm->me == 0)
+        error->warning(FLERR, fmt::format("fix {} tdem/timestep: fix {} {} is not supported (only tdem/wall/gran); "
+                                          "no advice for its contacts",
+                                          id, modify->fix[k]->id, modify->fix[k]->style));
+      continue;
+    }
+    std::vector<double> wm, wr, wrho;
+    type_minima(groupbit | w->groupbit, wm, wr, wrho);
+    const tdem_lammps::LawCoeffs &c = w->wall_law();
+    for (int t = 1; t <= nt; t++) {
+      if (!(wm[t] < BIG)) continue;
+      th::Row r;
+      r.what = fmt::format("wall {} type {}", w->id, t);
+      r.itype = t, r.jtype = 0;
+      r.meff = wm[t];
+      r.reff = wr[t];
+      law_row(c, r);
+      if (has_material(c.mode)) r.material = ta::Material{wr[t], wrho[t], c.E1, c.nu1};
+      rows.push_back(r);
+    }
+  }
+
+  th::advise_rows(rows, v_setup, scheme, update->dt);
+  for (const th::Row &r : rows)
+    if (!r.supported && comm->me == 0)
+      error->warning(FLERR, fmt::format("fix {} tdem/timestep: the law of {} ({}) is not supported; no advice",
+                                        id, r.what, r.law));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMTimestep::setup(int)
+{
+  runtime_warned = false;
+  double v_setup = opt.vmax;
+  std::string vsrc = "vmax";
+  if (!opt.vmax_given) {
+    v_setup = 2.0 * largest_speed();
+    vsrc = "2 x the largest particle speed";
+    if (!(v_setup > 0.0)) {
+      v_setup = 1.0;
+      vsrc = "no vmax given and every particle at rest: 1 (velocity units)";
+    }
+  }
+  build_rows(v_setup);
+  const ta::Policy pol = th::policy_of(opt);
+  if (comm->me == 0) {
+    std::string head = fmt::format("fix {} tdem/timestep: scheme {}, dt = {}, v_max = {} ({}), check {}, "
+                                   "every {}, fraction {}",
+                                   id, ti::info(scheme).name, update->dt, v_setup, vsrc, th::to_string(opt.check),
+                                   opt.every, opt.fraction);
+    std::string out = th::table(rows, head, pol);
+    for (const th::Row &r : rows)
+      if (r.advised) out += "  " + r.what + ": " + ta::summary(r.a) + "\n";
+    if (rows.empty()) out += "  (no type pair or wall with a supported law in the group)\n";
+    utils::logmesg(lmp, out);
+  }
+  // the vector at set-up: from the set-up advice
+  vec[0] = INFINITY, vec[1] = INFINITY, vec[2] = 0.0;
+  for (const th::Row &r : rows)
+    if (r.advised) {
+      vec[0] = std::min(vec[0], r.a.dt_critical);
+      vec[1] = std::min(vec[1], r.a.steps_per_contact);
+    }
+  vec[2] = std::isfinite(vec[0]) && vec[0] > 0.0 ? update->dt / vec[0] : 0.0;
+  last_step = update->ntimestep;
+
+  if (opt.check == th::CheckMode::off) return;
+  std::string stop;
+  for (th::Row &r : rows) {
+    if (!r.advised) continue;
+    const ta::Check c = ta::check(r.a, update->dt, pol);
+    if (c.verdict == ta::Verdict::stop && stop.empty()) stop = r.what + ": " + c.message;
+    if (c.verdict == ta::Verdict::warn && comm->me == 0)
+      error->warning(FLERR, fmt::format("fix {} tdem/timestep: {}: {}", id, r.what, c.message));
+    if (c.verdict == ta::Verdict::stop && opt.check == th::CheckMode::warn && comm->me == 0)
+      error->warning(FLERR, fmt::format("fix {} tdem/timestep: {}: {}", id, r.what, c.message));
+  }
+  if (!stop.empty() && opt.check == th::CheckMode::stop)
+    error->all(FLERR, fmt::format("fix {} tdem/timestep (check stop): {}", id, stop));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMTimestep::run_check(const char *when)
+{
+  const double speed = largest_speed();
+  std::vector<double> xi;
+  largest_overlaps(xi);
+  const int nt = atom->ntypes;
+  auto row_xi = [&](const th::Row &r) { return r.jtype ? xi[r.itype * (nt + 1) + r.jtype] : 0.0; };
+  const ta::Policy pol = th::policy_of(opt);
+  const th::Now now = th::recheck(rows, 2.0 * speed, speed, row_xi, scheme, update->dt, pol);
+  vec[0] = now.dt_critical;
+  vec[1] = now.steps_per_contact;
+  vec[2] = now.fraction;
+  last_step = update->ntimestep;
+  if (!when || opt.check == th::CheckMode::off || now.verdict == ta::Verdict::ok) return;
+  double xmax = 0.0;
+  for (double v : xi) xmax = std::max(xmax, v);
+  const std::string msg = fmt::format("fix {} tdem/timestep: {} check at step {} (largest particle speed {}, "
+                                      "approach velocity bound {}, largest pair overlap {}): {}",
+                                      id, when, update->ntimestep, speed, 2.0 * speed, xmax, now.message);
+  if (now.verdict == ta::Verdict::stop && opt.check == th::CheckMode::stop) error->all(FLERR, msg);
+  if (!runtime_warned && comm->me == 0) error->warning(FLERR, msg + " (warned once per run)");
+  runtime_warned = true;
+}
+
+void FixTDEMTimestep::end_of_step()
+{
+  run_check("run-time");
+}
+
+double FixTDEMTimestep::compute_vector(int n)
+{
+  if (update->ntimestep != last_step) run_check(nullptr);
+  return vec[n];
+}

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LIGGGHTS 3.8: fix tdem/timestep, the time-step advice of src/advice/timestep.h for the
+// normal laws of pair gran and fix wall/gran (issue 8).
+//
+//   fix ID group tdem/timestep [vmax V] [check off|warn|stop] [every N] [fraction F] [scheme NAME]
+//
+// The law of pair gran / each fix wall/gran is found with contact_match("normal", NAME); its
+// parameters are read from the fix property/global the law reads (kn, gamman, gamman_abs,
+// youngsModulus, poissonsRatio, coefficientRestitution, contactTime, characteristicVelocity,
+// dampingCoefficient, dampingExponent). Supported: tdem/lsd, tdem/hertz, hooke, hooke/stiffness,
+// hertz; other laws: a warning naming the law. The model settings (tdem/lsd `parameters`,
+// `absolute_damping`, `limitForce`; tdem/hertz `damping`) live inside the contact model and are not
+// visible from outside: every setting the present properties allow is advised and the smallest
+// dt_c is used (the table says which). Rows, table, check and run-time check: as in LAMMPS
+// (src/advice/host_table.h). See docs/timestep.md.
+#ifdef FIX_CLASS
+FixStyle(tdem/timestep, FixTdemTimestep)
+#else
+
+#ifndef TDEM_LIG_FIX_TDEM_TIMESTEP_H
+#define TDEM_LIG_FIX_TDEM_TIMESTEP_H
+
+#include <string>
+#include <vector>
+
+#include "fix.h"
+
+#include "advice/host_table.h"
+
+namespace LAMMPS_NS {
+
+class FixTdemTimestep : public Fix {
+ public:
+  FixTdemTimestep(class LAMMPS*, int, char**);
+  int setmask();
+  void init();
+  void setup(int);
+  void end_of_step();
+  double compute_vector(int);
+
+ private:
+  tdem::advice::host::Options opt_;
+  tdem::integrators::Scheme scheme_;
+  std::vector<tdem::advice::host::Row> rows_;
+  double vec_[3];
+  bool runtime_warned_;
+  bigint last_step_;
+
+  void build_rows(double v_setup);
+  void type_minima(int mask, std::vector<double>& mmin, std::vector<double>& rmin, std::vector<double>& rhomin);
+  double largest_speed();
+  void largest_overlaps(std::vector<double>& xi);
+  void run_check(const char* when);
+  void say(const std::string& s);
+  void law_row(const std::string& model, int i, int j, tdem::advice::host::Row& r);
+  // fix property/global values (found = false: no such property)
+  double pair_prop(const char* name, int i, int j, bool& found);
+  double type_prop(const char* name, int i, bool& found);
+  double scalar_prop(const char* name, bool& found);
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

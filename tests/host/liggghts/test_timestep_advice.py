@@ -1,0 +1,429 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""fix tdem/timestep in LIGGGHTS (issue 8). Parts (--part NAME), as the LAMMPS test
+(tests/host/lammps/test_timestep_advice.py):
+
+  acceptance  head-on two-sphere impact, model tdem/lsd (parameters stiffness: kn, gamman per unit
+              m*), nve/sphere; dt_c = 2/omega (sqrt(1+zeta^2) - zeta) computed here.
+              * 1.1 dt_c with `check stop`: stopped at set-up, the error names dt and dt_c;
+              * 1.1 dt_c, `check off`, the pair pressed together by opposite constant forces
+                (equilibrium overlap 10 v0/omega): the oscillation grows until the spheres separate;
+              * 0.5 dt_c (`check stop` lets it run): the pressed pair stays and calms down; the free
+                impact gives e within 0.15 of the closed form and equals velocity Verlet
+                re-implemented here to 1e-9.
+  closed_forms the printed table against closed forms computed here: tdem/hertz with e = 1
+              (undamped): k_max = 3/2 k~ sqrt(xi_max), xi_max = (5 m* v^2/(4 k~))^(2/5), dt_c = 2/omega,
+              contact time 2.8683 (m*^2/(R* Y*^2 v))^(1/5), Rayleigh time; m*, R* of the lightest /
+              smallest atoms (two sizes per type); stock hooke (k matched to Hertz at
+              characteristicVelocity, gamma from e), hooke/stiffness (kn, m* gamman), hertz (damping
+              2 sqrt(5/6) |beta| sqrt(2 Y* sqrt(R*) m*) xi^(1/4) at the undamped xi_max); a tdem/lsd
+              wall (m* = m); the scheme of fix tdem/integrate and of `scheme`.
+  check_modes `check warn` warns, `check stop` stops with the numbers, `check off` stays silent.
+  runtime     tdem/hertz (e = 1), check stop, dt = 0.45 dt_c(vmax): the first run passes; velocities
+              raised by 100 between runs: the run-time check (every 10) stops at step <= first + 10.
+  bad_input   every keyword with a bad value; an unsupported law gives a warning naming it.
+"""
+import math
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import tdem_lig as T  # noqa: E402
+
+PART = ["all"]
+
+
+def extra(p):
+    p.add_argument("--part", default="all")
+
+
+args = T.parse_args(extra)
+checks = T.Checks()
+EXE = args.tdem
+RHO = 2500.0
+R = 0.005
+
+
+def mass(r, rho=RHO):
+    return rho * 4.0 / 3.0 * math.pi * r ** 3
+
+
+def vv_critical(k, gamma, meff):
+    w = math.sqrt(k / meff)
+    z = gamma / (2.0 * math.sqrt(k * meff))
+    return 2.0 / w * (math.sqrt(1.0 + z * z) - z), z, w
+
+
+def close(a, b, tol):
+    return a is not None and b is not None and abs(a - b) <= tol * abs(b)
+
+
+HEAD = """
+atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+hard_particles yes
+units si
+region box block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box {ntypes} box
+neighbor 0.001 bin
+neigh_modify delay 0
+{props}
+{interaction}
+timestep {dt!r}
+{atoms}
+{integrate}
+{tsfix}
+"""
+
+K = 1.0e4
+E_REST = 0.8
+MEFF = mass(R) / 2
+
+
+def gamma_for(e, k, meff):
+    ln = math.log(e)
+    beta = -ln / math.sqrt(math.pi ** 2 + ln * ln)
+    return 2.0 * beta * math.sqrt(k * meff)
+
+
+G = gamma_for(E_REST, K, MEFF)
+GN = G / MEFF  # gamman per unit effective mass
+DTC, ZETA, OMEGA = vv_critical(K, G, MEFF)
+
+
+def lsd_props(ntypes=1, kn=K, gn=GN):
+    n2 = ntypes * ntypes
+    return ("fix m_kn all property/global kn peratomtypepair %d %s\n"
+            "fix m_kt all property/global kt peratomtypepair %d %s\n"
+            "fix m_gn all property/global gamman peratomtypepair %d %s\n"
+            "fix m_gt all property/global gammat peratomtypepair %d %s\n"
+            "fix m_mu all property/global coefficientFriction peratomtypepair %d %s\n"
+            % (ntypes, " ".join([repr(kn)] * n2), ntypes, " ".join(["1000.0"] * n2), ntypes,
+               " ".join([repr(gn)] * n2), ntypes, " ".join(["0.0"] * n2), ntypes, " ".join(["0.5"] * n2)))
+
+
+LSD_PAIR = "pair_style gran model tdem/lsd tangential tdem/cundall_strack\npair_coeff * *"
+
+
+def two_spheres(gap=0.0005, v=0.5, r1=R, r2=R):
+    z1, z2 = -(r1 + gap / 2), r2 + gap / 2
+    return ("create_atoms 1 single 0 0 %r units box\ncreate_atoms 1 single 0 0 %r units box\n"
+            "set atom 1 diameter %r density %r\nset atom 2 diameter %r density %r\n"
+            "group g1 id 1\ngroup g2 id 2\n"
+            "velocity g1 set 0 0 %r units box\nvelocity g2 set 0 0 %r units box\n"
+            % (z1, z2, 2 * r1, RHO, 2 * r2, RHO, v / 2, -v / 2))
+
+
+def script(props, inter, dt, atoms, tsfix, body, ntypes=1, integrate="fix integr all nve/sphere"):
+    return HEAD.format(ntypes=ntypes, props=props, interaction=inter, dt=dt, atoms=atoms,
+                       integrate=integrate, tsfix=tsfix) + body
+
+
+_count = [0]
+
+
+def run(text, name, check=False, np_=1):
+    _count[0] += 1
+    d = T.workdir(args, "timestep_%s_%d" % (name, _count[0]))
+    r = T.run(EXE, text, d, name, np_=np_, mpirun=args.mpirun, check=check, timeout=300)
+    return r.returncode, r.stdout + r.stderr
+
+
+def table_rows(out):
+    lines = out.splitlines()
+    rows = {}
+    for i, l in enumerate(lines):
+        if l.startswith("#what"):
+            cols = l.split()
+            for m in lines[i + 1:]:
+                s = m.split()
+                if not s or not (s[0].startswith("pair_") or s[0].startswith("wall_")):
+                    break
+                if len(s) == len(cols):
+                    rows[s[0]] = {c: (s[j] if j < 2 or s[j] in ("-", "ok", "warn", "stop") else float(s[j]))
+                                  for j, c in enumerate(cols)}
+    return rows
+
+
+def thermo_rows(out):
+    res = []
+    for header, rows in T.thermo_blocks(out):
+        res += [r.split() for r in rows]
+    return res
+
+
+# ------------------------------------------------------------------ acceptance
+def vv_restitution(dt, gap, v):
+    m = mass(R)
+    z1, z2 = -(R + gap / 2), R + gap / 2
+    v1, v2 = v / 2, -v / 2
+
+    def force(z1, z2, v1, v2):
+        xi = 2 * R - (z2 - z1)
+        if xi <= 0.0:
+            return 0.0
+        return K * xi + MEFF * GN * (v1 - v2)
+
+    f = force(z1, z2, v1, v2)
+    touched = False
+    for _ in range(200000):
+        v1 -= 0.5 * dt * f / m
+        v2 += 0.5 * dt * f / m
+        z1 += dt * v1
+        z2 += dt * v2
+        f = force(z1, z2, v1, v2)
+        v1 -= 0.5 * dt * f / m
+        v2 += 0.5 * dt * f / m
+        if f != 0.0:
+            touched = True
+        elif touched:
+            break
+    return (v2 - v1) / v
+
+
+def impact(dt, tsfix, gap=0.0005, v=0.5, nsteps=None):
+    nsteps = nsteps or int((gap / v + 4.0 * math.pi / OMEGA) / dt) + 5
+    body = ("variable dv equal vz[2]-vz[1]\nthermo_style custom step v_dv\nthermo_modify format float %%.17g\n"
+            "thermo %d\nrun %d\n" % (nsteps, nsteps))
+    return run(script(lsd_props(), LSD_PAIR, dt, two_spheres(gap, v), tsfix, body), "impact")
+
+
+def pressed(dt, tsfix, v0=0.1, nsteps=4000):
+    m = mass(R)
+    xi_eq = 10.0 * v0 / OMEGA
+    F = K * xi_eq * MEFF / (m / 2)
+    atoms = ("create_atoms 1 single 0 0 %r units box\ncreate_atoms 1 single 0 0 %r units box\n"
+             "set group all diameter %r density %r\ngroup g1 id 1\ngroup g2 id 2\n"
+             "velocity g1 set 0 0 %r units box\nvelocity g2 set 0 0 %r units box\n"
+             "fix f1 g1 addforce 0 0 %r\nfix f2 g2 addforce 0 0 %r\n"
+             % (-R, R, 2 * R, RHO, v0 / 2, -v0 / 2, F, -F))
+    body = ("variable xi equal %r-(z[2]-z[1])\nthermo_style custom step v_xi\n"
+            "thermo_modify format float %%.17g\nthermo 1\nrun %d\n" % (2 * R, nsteps))
+    rc, out = run(script(lsd_props(), LSD_PAIR, dt, atoms, tsfix, body), "pressed")
+    xs = [float(r[1]) for r in thermo_rows(out) if len(r) > 1 and re.match(r"^-?[0-9.eE+-]+$", r[1])]
+    xs = [x if math.isfinite(x) else float("nan") for x in xs]
+    if rc != 0:
+        if "Lost atoms" not in out and "lost" not in out.lower():
+            sys.stdout.write(out[-3000:])
+            raise SystemExit("FAIL: pressed pair: unexpected failure")
+        print("info: pressed pair at dt = %.6g: atoms lost after %d steps" % (dt, len(xs)))
+        return -1.0, max(xs) if xs else math.inf, math.nan, xi_eq
+    return min(xs[1:]), max(xs), xs[-1], xi_eq
+
+
+def part_acceptance():
+    print("tdem/lsd: k = %g N/m, gamman = %.6g 1/s, m* = %.6g kg, zeta = %.6g, dt_c(VV) = %.9g s"
+          % (K, GN, MEFF, ZETA, DTC))
+    rc, out = impact(1.1 * DTC, "fix ts all tdem/timestep check stop")
+    m = re.search(r"critical step dt_c = ([0-9.eE+-]+) s", out)
+    checks.check(rc != 0 and "tdem/timestep (check stop)" in out and m is not None and close(float(m.group(1)), DTC, 1e-7),
+                 "1.1 dt_c, check stop: stopped at set-up, printed dt_c %s vs %.9g (rc %d)"
+                 % (m.group(1) if m else "?", DTC, rc))
+    mn, mx, fin, xeq = pressed(1.1 * DTC, "fix ts all tdem/timestep check off")
+    checks.check(mn < 0.0 or mx > 3 * xeq or not math.isfinite(fin),
+                 "1.1 dt_c, enduring contact: overlap left the well (min %.3g, max %.3g, xi_eq %.3g)" % (mn, mx, xeq))
+    mn, mx, fin, xeq = pressed(0.5 * DTC, "fix ts all tdem/timestep check stop")
+    checks.check(mn > 0.0 and mx < 2.5 * xeq and abs(fin - xeq) < 0.05 * xeq,
+                 "0.5 dt_c, enduring contact: stays and decays (min %.3g, max %.3g, final %.4g, xi_eq %.4g)"
+                 % (mn, mx, fin, xeq))
+    e_closed = math.exp(-math.pi * ZETA / math.sqrt(1 - ZETA ** 2))
+    for gap in (0.0005, 0.000537, 0.000571):
+        dt = 0.5 * DTC
+        rc, out = impact(dt, "fix ts all tdem/timestep check stop", gap=gap)
+        rows = thermo_rows(out)
+        e = float(rows[-1][1]) / 0.5 if rc == 0 and rows else math.nan
+        e_vv = vv_restitution(dt, gap, 0.5)
+        checks.check(math.isfinite(e) and abs(e - e_closed) < 0.15 and close(e, e_vv, 1e-9),
+                     "0.5 dt_c, free impact (gap %g): e = %.9f, closed form %.6f, velocity Verlet here %.9f"
+                     % (gap, e, e_closed, e_vv))
+
+
+# ------------------------------------------------------------------ closed forms
+def hertz_closed(ystar, meff, reff, v):
+    kt = 4.0 / 3.0 * ystar * math.sqrt(reff)
+    xi = (5 * meff * v * v / (4 * kt)) ** 0.4
+    kmax = 1.5 * kt * math.sqrt(xi)
+    tc = 2.8683 * (meff * meff / (reff * ystar * ystar * v)) ** 0.2
+    return kmax, 2.0 / math.sqrt(kmax / meff), tc, xi
+
+
+def rayleigh(E, nu, r, rho):
+    Gs = E / (2 * (1 + nu))
+    return math.pi * r * math.sqrt(rho / Gs) / (0.1631 * nu + 0.8766)
+
+
+def mat_props(ntypes, E, nu, e, extra=""):
+    n2 = ntypes * ntypes
+    return ("fix m_E all property/global youngsModulus peratomtype %s\n"
+            "fix m_nu all property/global poissonsRatio peratomtype %s\n"
+            "fix m_e all property/global coefficientRestitution peratomtypepair %d %s\n"
+            "fix m_ka all property/global tangentialStiffnessRatio peratomtypepair %d %s\n"
+            "fix m_mu all property/global coefficientFriction peratomtypepair %d %s\n%s"
+            % (" ".join([repr(E)] * ntypes), " ".join([repr(nu)] * ntypes), ntypes, " ".join([repr(e)] * n2),
+               ntypes, " ".join(["0.8"] * n2), ntypes, " ".join(["0.5"] * n2), extra))
+
+
+def part_closed_forms():
+    E, nu, v = 7e10, 0.25, 2.0
+    ystar = E / (2 * (1 - nu * nu))
+    r1a, r1b, r2a, r2b = 0.005, 0.004, 0.003, 0.0035
+    atoms = "\n".join([
+        "create_atoms 1 single -0.02 0 0 units box", "create_atoms 1 single 0.02 0 0 units box",
+        "create_atoms 2 single 0 -0.02 0 units box", "create_atoms 2 single 0 0.02 0 units box",
+        "set atom 1 diameter %r density %r" % (2 * r1a, RHO), "set atom 2 diameter %r density %r" % (2 * r1b, RHO),
+        "set atom 3 diameter %r density %r" % (2 * r2a, RHO), "set atom 4 diameter %r density %r" % (2 * r2b, RHO)])
+    m1, m2 = mass(r1b), mass(r2a)
+    dt = 1e-7
+    inter = ("pair_style gran model tdem/hertz tangential tdem/cundall_strack damping tsuji\npair_coeff * *\n"
+             "fix w all wall/gran model tdem/hertz tangential tdem/cundall_strack primitive type 1 zplane -0.05 "
+             "damping tsuji")
+    rc, out = run(script(mat_props(2, E, nu, 1.0), inter, dt, atoms, "fix ts all tdem/timestep vmax %r" % v,
+                         "run 0\n", ntypes=2), "cf_hertz")
+    rows = table_rows(out)
+    for (i, j, mi, mj, ri, rj) in ((1, 1, m1, m1, r1b, r1b), (1, 2, m1, m2, r1b, r2a), (2, 2, m2, m2, r2a, r2a)):
+        meff, reff = mi * mj / (mi + mj), ri * rj / (ri + rj)
+        kmax, dtc, tc, _ = hertz_closed(ystar, meff, reff, v)
+        tr = min(rayleigh(E, nu, ri, RHO), rayleigh(E, nu, rj, RHO))
+        row = rows.get("pair_%d_%d" % (i, j))
+        ok = row is not None and close(row["m*"], meff, 1e-8) and close(row["R*"], reff, 1e-8) and \
+            close(row["k_max"], kmax, 1e-7) and close(row["dt_critical"], dtc, 1e-7) and \
+            close(row["t_contact"], tc, 2e-4) and close(row["T_Rayleigh"], tr, 1e-7)
+        checks.check(ok, "tdem/hertz e=1 pair %d %d: m* %s/%.9g R* %s/%.9g k_max %s/%.9g dt_c %s/%.9g t_c %s/%.9g "
+                     "T_R %s/%.9g" % (i, j, row and row["m*"], meff, row and row["R*"], reff, row and row["k_max"], kmax,
+                                      row and row["dt_critical"], dtc, row and row["t_contact"], tc,
+                                      row and row["T_Rayleigh"], tr))
+    # the wall (same material, R* = R, m* = m)
+    for t, m, r in ((1, m1, r1b), (2, m2, r2a)):
+        kmax, dtc, tc, _ = hertz_closed(ystar, m, r, v)
+        row = rows.get("wall_w_type_%d" % t)
+        checks.check(row is not None and close(row["m*"], m, 1e-8) and close(row["R*"], r, 1e-8)
+                     and close(row["dt_critical"], dtc, 1e-7),
+                     "tdem/hertz wall type %d: m* %s/%.9g dt_c %s/%.9g"
+                     % (t, row and row["m*"], m, row and row["dt_critical"], dtc))
+    # stock hooke, hooke/stiffness, hertz between two equal spheres
+    e, vc = 0.7, 1.5
+    atoms = two_spheres()
+    lne = math.log(e)
+    for model in ("hooke", "hooke/stiffness", "hertz"):
+        if model == "hooke/stiffness":
+            props, expect = lsd_props(), vv_critical(K, MEFF * GN, MEFF)[0]
+            what = "dt_c"
+        elif model == "hooke":
+            props = mat_props(1, E, nu, e, "fix m_vc all property/global characteristicVelocity scalar %r\n" % vc)
+            sr = math.sqrt(R / 2)
+            k = 16.0 / 15.0 * sr * ystar * (15.0 * MEFF * vc * vc / (16.0 * sr * ystar)) ** 0.2
+            g = math.sqrt(4.0 * MEFF * k * lne * lne / (lne * lne + math.pi ** 2))
+            expect = vv_critical(k, g, MEFF)[0]
+            what = "dt_c"
+        else:
+            props = mat_props(1, E, nu, e)
+            kmax, _, _, xi = hertz_closed(ystar, MEFF, R / 2, 1.0)
+            beta = abs(lne) / math.sqrt(lne * lne + math.pi ** 2)
+            c = 2 * math.sqrt(5.0 / 6.0) * beta * math.sqrt(2 * ystar * math.sqrt(R / 2) * MEFF) * xi ** 0.25
+            expect = vv_critical(kmax, c, MEFF)[0]
+            what = "dt_c (at the undamped xi_max, v = 1)"
+        inter = "pair_style gran model %s tangential history\npair_coeff * *" % model
+        rc, out = run(script(props, inter, 1e-7, atoms, "fix ts all tdem/timestep vmax 1", "run 0\n"), "stock")
+        row = table_rows(out).get("pair_1_1")
+        checks.check(row is not None and close(row["dt_critical"], expect, 1e-7),
+                     "stock %s: %s %s vs %.9g" % (model, what, row and row["dt_critical"], expect))
+    # the scheme: fix tdem/integrate gear5 and the keyword
+    for integ, kw, name, wc in (("fix i all tdem/integrate scheme gear5", "", "gear5", 0.8545),
+                                ("fix integr all nve/sphere", " scheme ab4", "ab4", 0.4138)):
+        rc, out = run(script(lsd_props(), LSD_PAIR, 1e-6, two_spheres(), "fix ts all tdem/timestep" + kw, "run 0\n",
+                             integrate=integ), "scheme")
+        row = table_rows(out).get("pair_1_1")
+        checks.check(("scheme %s" % name) in out and row is not None and close(row["dt_critical"], wc / OMEGA, 2e-4),
+                     "scheme %s picked up: dt_c %s vs w_c/omega = %.6g" % (name, row and row["dt_critical"], wc / OMEGA))
+
+
+# ------------------------------------------------------------------ check modes
+def part_check_modes():
+    for mode, frac, expect in (("warn", 0.7, "warn"), ("stop", 1.1, "stop"), ("off", 1.1, "off"),
+                               ("warn", 1.1, "warn_unstable")):
+        dt = frac * DTC
+        rc, out = impact(dt, "fix ts all tdem/timestep check %s" % mode, nsteps=20)
+        warn = [l for l in out.splitlines() if l.startswith("WARNING") and "tdem/timestep" in l]
+        dt_s = "time step dt = %.9g s" % dt
+        if expect == "warn":
+            checks.check(rc == 0 and warn and dt_s in warn[0] and "0.7 x the critical step" in warn[0],
+                         "check warn at 0.7 dt_c: runs, warns '%s'" % (warn[0][:160] if warn else ""))
+        elif expect == "warn_unstable":
+            checks.check(rc == 0 and warn and "integration is unstable" in warn[0],
+                         "check warn at 1.1 dt_c: runs, warns '%s'" % (warn[0][:160] if warn else ""))
+        elif expect == "stop":
+            err = [l for l in out.splitlines() if l.startswith("ERROR")]
+            checks.check(rc != 0 and err and dt_s in err[0] and "1.1 x the critical step dt_c = %.9g s" % DTC in err[0]
+                         and "use dt <=" in err[0], "check stop at 1.1 dt_c: error '%s'" % (err[0][:200] if err else ""))
+        else:
+            checks.check(rc == 0 and not warn and "ERROR" not in out, "check off at 1.1 dt_c: silent, runs")
+
+
+# ------------------------------------------------------------------ run-time check
+def part_runtime():
+    E, nu, v = 7e10, 0.3, 0.2
+    ystar = E / (2 * (1 - nu * nu))
+    kmax, dtc, tc, _ = hertz_closed(ystar, MEFF, R / 2, v)
+    dt = 0.45 * dtc
+    inter = "pair_style gran model tdem/hertz tangential tdem/cundall_strack damping tsuji\npair_coeff * *"
+    for mode, nproc in (("stop", 1), ("warn", 1), ("stop", 2)):
+        body = ("thermo_style custom step f_ts[1] f_ts[2] f_ts[3]\nthermo 10\nrun 100\n"
+                "velocity g1 set 0 0 %r units box\nvelocity g2 set 0 0 %r units box\nrun 100\n" % (50 * v, -50 * v))
+        rc, out = run(script(mat_props(1, E, nu, 1.0), inter, dt, two_spheres(gap=0.004, v=v),
+                             "fix ts all tdem/timestep vmax %r check %s every 10" % (v, mode), body), "runtime",
+                      np_=nproc)
+        second = out[out.find("Loop time") + 1:]
+        m = re.search(r"run-time check at step (\d+)", second)
+        if mode == "stop":
+            err = [l for l in out.splitlines() if l.startswith("ERROR")]
+            fm = re.search(r"is ([0-9.]+) x the critical", err[0]) if err else None
+            checks.check(rc != 0 and "Loop time" in out and m and 100 < int(m.group(1)) <= 110 and err
+                         and "run-time check" in err[0] and fm and close(float(fm.group(1)), 0.45 * 100 ** 0.2, 1e-6),
+                         "velocity x100 between runs, check stop, %d rank(s): stopped at step %s: %s"
+                         % (nproc, m and m.group(1), err[0][:220] if err else "no error"))
+        else:
+            nwarn = second.count("run-time check at step")
+            frac = [float(r[3]) for r in thermo_rows(out) if len(r) == 4]
+            checks.check(rc == 0 and m and 100 < int(m.group(1)) <= 110 and nwarn == 1 and frac and max(frac) > 1.0
+                         and frac[0] < 0.5,
+                         "velocity x100 between runs, check warn: one warning at step %s, dt/dt_c %s -> %s"
+                         % (m and m.group(1), frac and frac[0], frac and max(frac)))
+
+
+# ------------------------------------------------------------------ bad input
+def part_bad_input():
+    cases = [
+        ("unknown keyword", "foo 1", ["unknown keyword 'foo'", "vmax V, check off|warn|stop, every N"]),
+        ("check value", "check maybe", ["keyword 'check' value 'maybe'", "off|warn|stop"]),
+        ("vmax negative", "vmax -1", ["keyword 'vmax' value -1", "(0, inf)"]),
+        ("every negative", "every -5", ["keyword 'every' value '-5'", "integer >= 0"]),
+        ("fraction above 1", "fraction 2", ["keyword 'fraction' value 2", "(0, 1]"]),
+        ("scheme unknown", "scheme rk4", ["keyword 'scheme' value 'rk4'", "velocity_verlet", "gear6"]),
+        ("missing value", "check", ["keyword 'check' needs a value"]),
+    ]
+    for name, kw, expect in cases:
+        rc, out = run(script(lsd_props(), LSD_PAIR, 1e-6, two_spheres(), "fix ts all tdem/timestep " + kw, "run 0\n"),
+                      "bad")
+        err = [l for l in out.splitlines() if l.startswith("ERROR")]
+        checks.check(0 < rc < 128 and err and all(e in err[0] for e in expect),
+                     "%s: %s" % (name, err[0][:200] if err else "no error, rc %d" % rc))
+    # an unsupported law: a warning naming it, the run goes on
+    props = mat_props(1, 7e10, 0.3, 0.7)
+    inter = "pair_style gran model hertz/stiffness tangential history\npair_coeff * *"
+    props += ("fix m_kn all property/global kn peratomtypepair 1 1e5\nfix m_kt all property/global kt peratomtypepair 1 1e5\n"
+              "fix m_gn all property/global gamman peratomtypepair 1 10\nfix m_gt all property/global gammat peratomtypepair 1 0\n")
+    rc, out = run(script(props, inter, 1e-6, two_spheres(), "fix ts all tdem/timestep", "run 0\n"), "unsupported")
+    w = [l for l in out.splitlines() if l.startswith("WARNING") and "hertz/stiffness" in l and "not supported" in l]
+    checks.check(rc == 0 and w, "unsupported law hertz/stiffness: warning '%s'" % (w[0][:160] if w else out[-300:]))
+
+
+PARTS = {"acceptance": part_acceptance, "closed_forms": part_closed_forms, "check_modes": part_check_modes,
+         "runtime": part_runtime, "bad_input": part_bad_input}
+for name, f in PARTS.items():
+    if args.part in ("all", name):
+        f()
+checks.done()
