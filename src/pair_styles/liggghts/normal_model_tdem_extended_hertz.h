@@ -23,6 +23,7 @@
 #include "force.h"
 #include "atom.h"
 #include "error.h"
+#include "update.h"
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/extended.h"
@@ -43,6 +44,7 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
     const int a = hsetup->add_history_value("ext_alpha", "0");
     if (a != history_offset_ + 1)
       error->all(FLERR, "model tdem/extended_hertz: history values v0, alpha are not adjacent");
+    stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
 
   void registerSettings(Settings& settings) {
@@ -94,6 +96,9 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
     tdem::extended::HertzParams p = pc.p;
     p.k = pc.k_per_sqrt_r * std::sqrt(reff);
     double* const hist = &sidata.contact_history[history_offset_];
+    tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, 2,
+                                                 static_cast<double>(update->ntimestep),
+                                                 sidata.computeflag && sidata.shearupdate);
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, reff};
     const bool update = sidata.computeflag && sidata.shearupdate;
     const tdem::NormalResult<double> r =
@@ -121,6 +126,7 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
   };
   tdem::liggghts::PairTable<PairCoefficients> coef_;
   int history_offset_ = 0;
+  int stamp_offset_ = 0;
   int e_form_ = 1;  // rational
   bool limit_force_ = false;
   tdem::ContactEnd end_ = tdem::ContactEnd::zero_overlap;

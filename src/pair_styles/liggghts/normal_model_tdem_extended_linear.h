@@ -22,6 +22,7 @@
 #include "force.h"
 #include "atom.h"
 #include "error.h"
+#include "update.h"
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/extended.h"
@@ -43,6 +44,7 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
     const int g = hsetup->add_history_value("ext_gamma", "0");
     if (k != history_offset_ + 1 || g != history_offset_ + 2)
       error->all(FLERR, "model tdem/extended_linear: history values v0, k, gamma are not adjacent");
+    stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
 
   void registerSettings(Settings& settings) {
@@ -91,6 +93,9 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double* const hist = &sidata.contact_history[history_offset_];
+    tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, tdem::extended::linear_history_size,
+                                                 static_cast<double>(update->ntimestep),
+                                                 sidata.computeflag && sidata.shearupdate);
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, 0.0};
     const bool update = sidata.computeflag && sidata.shearupdate;
     const tdem::NormalResult<double> r =
@@ -116,6 +121,7 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
   };
   tdem::liggghts::PairTable<PairCoefficients> coef_;
   int history_offset_ = 0;
+  int stamp_offset_ = 0;
   int e_form_ = 1;   // rational
   int tc_form_ = 1;  // power
   bool limit_force_ = false;

@@ -21,6 +21,7 @@
 #include "force.h"
 #include "atom.h"
 #include "error.h"
+#include "update.h"
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/power_law_hysteresis.h"
@@ -39,6 +40,7 @@ class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
     history_offset_ = hsetup->add_history_value(tdem::power_law::history[0].name, "0");
     for (int s = 1; s < tdem::power_law::history_size; ++s)
       hsetup->add_history_value(tdem::power_law::history[s].name, "0");
+    stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
 
   void registerSettings(Settings&) {}
@@ -84,6 +86,9 @@ class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double* const hist = &sidata.contact_history[history_offset_];
+    tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, tdem::power_law::history_size,
+                                                 static_cast<double>(update->ntimestep),
+                                                 sidata.computeflag && sidata.shearupdate);
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, 0.0};
     const tdem::NormalResult<double> r =
         tdem::power_law::force(pc.p, kin, hist, sidata.computeflag && sidata.shearupdate);
@@ -105,6 +110,7 @@ class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
   };
   tdem::liggghts::PairTable<PairCoefficients> coef_;
   int history_offset_ = 0;
+  int stamp_offset_ = 0;
 };
 
 }  // namespace ContactModels

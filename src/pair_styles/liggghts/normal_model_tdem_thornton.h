@@ -17,6 +17,7 @@
 #include "force.h"
 #include "atom.h"
 #include "error.h"
+#include "update.h"
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/thornton.h"
@@ -35,6 +36,7 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
     const int second = hsetup->add_history_value("f_max", "0");
     if (second != history_offset_ + 1)
       error->all(FLERR, "model tdem/thornton: history values xi_max, f_max are not adjacent");
+    stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
 
   void registerSettings(Settings&) {}
@@ -69,6 +71,9 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
     double* const hist = &sidata.contact_history[history_offset_];
+    tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, 2,
+                                                 static_cast<double>(update->ntimestep),
+                                                 sidata.computeflag && sidata.shearupdate);
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, reff};
     const tdem::NormalResult<double> r =
         tdem::thornton::force(pc.p, kin, hist, sidata.computeflag && sidata.shearupdate);
@@ -92,6 +97,7 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
   };
   tdem::liggghts::PairTable<PairCoefficients> coef_;
   int history_offset_ = 0;
+  int stamp_offset_ = 0;
 };
 
 }  // namespace ContactModels

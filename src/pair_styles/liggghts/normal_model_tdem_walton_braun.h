@@ -18,6 +18,7 @@
 #include "force.h"
 #include "atom.h"
 #include "error.h"
+#include "update.h"
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/walton_braun.h"
@@ -33,6 +34,7 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
       : NormalModelBase(lmp, hsetup, c) {
     history_offset_ = hsetup->add_history_value("xi_max", "0");
+    stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
 
   void registerSettings(Settings&) {}
@@ -75,6 +77,9 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double* const hist = &sidata.contact_history[history_offset_];
+    tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, 1,
+                                                 static_cast<double>(update->ntimestep),
+                                                 sidata.computeflag && sidata.shearupdate);
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, 0.0};
     const tdem::NormalResult<double> r =
         tdem::walton_braun::force(pc.p, kin, hist, sidata.computeflag && sidata.shearupdate);
@@ -95,6 +100,7 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
   };
   tdem::liggghts::PairTable<PairCoefficients> coef_;
   int history_offset_ = 0;
+  int stamp_offset_ = 0;
 };
 
 }  // namespace ContactModels

@@ -8,6 +8,20 @@
 namespace tdem {
 namespace liggghts {
 
+// LIGGGHTS calls a model's surfacesClose only for pairs closer than contactDistanceFactor x
+// radsum, i.e. never for separated spheres by default, so the history of a pair that separated
+// lives on until the next neighbour rebuild. A law whose history must start afresh at every new
+// contact (xi_max of the hysteretic laws, v0 and coefficients of the extended laws) keeps the
+// step of its last evaluation + 1 in an extra history slot `stamp`; when the pair was apart
+// since then, the law's n values from `hist` on are cleared before the law runs. Set-up passes
+// (no update) neither clear nor stamp. (Tangential laws are left as in stock LIGGGHTS.)
+inline void clear_history_of_new_contact(double& stamp, double* hist, int n, double step, bool update) {
+  const double now = step + 1.0;
+  if (stamp != 0.0 && now - stamp > 1.0)
+    for (int s = 0; s < n; ++s) hist[s] = 0.0;
+  if (update) stamp = now;
+}
+
 inline void apply_normal_force(const LIGGGHTS::ContactModels::SurfacesIntersectData& sidata,
                                LIGGGHTS::ContactModels::ForceData& i_forces,
                                LIGGGHTS::ContactModels::ForceData& j_forces) {
