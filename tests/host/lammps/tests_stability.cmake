@@ -1,0 +1,24 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+# Stability suite (issue 8): one ctest per hard case, named after what it proves
+# (test_stability.py --case NAME; closed forms in tests/host/stability_ref.py).
+# TODO(clumps): lammps.stability.clump_8_contacts_no_energy_gain when the clump host fixes land.
+# TODO(grate): lammps.stability.grate_bed_no_lost_atoms when the grate host fixes land.
+set(_stab_cases
+    dt_0p9_critical_linear_stable_0p5_no_energy_gain
+    stiff_200gpa_hertz_impacts_0p001_and_100_mps_bounded
+    soft_1mpa_hertz_impacts_0p001_and_1_mps_bounded
+    grazing_89deg_tangential_no_energy_gain_coulomb_bound
+    mass_ratio_1_1000_head_on_momentum_and_e
+    dense_bed_at_rest_1e5_steps_no_creep
+    walton_braun_repeated_loading_no_gain_no_attraction
+    thornton_repeated_loading_no_gain_no_attraction
+    power_law_repeated_loading_no_gain_no_attraction
+    extended_laws_v0_1e-4_and_v_max_e_in_0_1
+    rank_crossing_in_contact_np2_equals_np1)
+foreach(_c ${_stab_cases})
+  add_test(NAME lammps.stability.${_c}
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_stability.py ${_args} --case ${_c})
+  set_tests_properties(lammps.stability.${_c} PROPERTIES LABELS "lammps;stability" TIMEOUT 300
+                       ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+set_tests_properties(lammps.stability.rank_crossing_in_contact_np2_equals_np1 PROPERTIES PROCESSORS 2)
