@@ -1,0 +1,18 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+# fix tdem/clump for LIGGGHTS (module 'clump', src/clumps/liggghts; docs/clumps_liggghts.md): included by
+# tests/host/liggghts/CMakeLists.txt. One-sphere clumps = nve/sphere, torque-free asymmetric body,
+# flat-face impacts against the N-contact closed form, -np 2 = -np 1, restart, insertion, bad input.
+if(NOT TDEM_LIGGGHTS_CLUMP)
+  return()
+endif()
+foreach(_part nve torquefree flatface parallel restart insert bad examples periodic)
+  add_test(NAME liggghts.clump.${_part}
+           COMMAND ${TDEM_LIGGGHTS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py --part ${_part}
+                   --tdem $<TARGET_FILE:tdem-liggghts> --stock ${TDEM_LIGGGHTS_STOCK}
+                   --mpirun ${_mpirun} --workdir ${_work}
+           WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR})
+  set_tests_properties(liggghts.clump.${_part} PROPERTIES LABELS liggghts TIMEOUT 300
+                       ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
+endforeach()
+set_tests_properties(liggghts.clump.parallel liggghts.clump.insert liggghts.clump.examples
+                     liggghts.clump.periodic PROPERTIES PROCESSORS 2)
