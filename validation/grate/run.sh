@@ -1,0 +1,66 @@
+#!/bin/sh
+# SPDX-License-Identifier: GPL-2.0-or-later
+# Grate showcase scenes (issue 7) on 2 MPI ranks and their analysis (README.md in this directory):
+#   input_scripts/liggghts/grate_forward_2d.in   forward-acting grate, disks, enforce2d
+#   input_scripts/liggghts/grate_forward_3d.in   forward-acting grate, spheres, periodic width
+#   input_scripts/liggghts/grate_reverse_3d.in   reverse-acting grate, steeper (18 deg instead of 10 deg)
+#   the forward 3D scene with stroke 0 and a finite feed (standing grate: P' -> 0), at dt and dt/2
+# then analyse.py: P' and Q' over time and along the grate, the comparison table, the residence-time
+# distribution and the sanity checks (exit status 1 if one fails).
+#
+#   validation/grate/run.sh [--short]
+#
+# --short: 1.5 s of grate time per scene (about a minute on 2 cores), written to WORKDIR/results;
+# without: 20 s per scene, the plots and table go to validation/grate/results/.
+# Environment: TDEM_LIGGGHTS (executable, default build/bin/tdem-liggghts), WORKDIR (run directory,
+# default validation/grate/work), RESULTS (overrides the results directory), MPIRUN (default "mpirun
+# --allow-run-as-root --oversubscribe --bind-to none --mca mpi_yield_when_idle 1 -np 2": ranks that yield
+# when idle, which matters on a shared machine).
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+root=$(cd "$here/../.." && pwd)
+short=0
+for a in "$@"; do
+  case $a in
+    --short) short=1 ;;
+    *) echo "run.sh: unknown argument '$a' (allowed: --short)" >&2; exit 2 ;;
+  esac
+done
+exe=${TDEM_LIGGGHTS:-$root/build/bin/tdem-liggghts}
+case $exe in /*) ;; *) exe="$(pwd)/$exe" ;; esac
+if [ ! -x "$exe" ]; then
+  echo "run.sh: tdem-liggghts not found at '$exe' (build it, or set TDEM_LIGGGHTS)" >&2
+  exit 2
+fi
+mpirun=${MPIRUN:-mpirun --allow-run-as-root --oversubscribe --bind-to none --mca mpi_yield_when_idle 1 -np 2}
+work=${WORKDIR:-$here/work}
+if [ "$short" = 1 ]; then
+  tend=1.5; stop_n=60; stop_t=1.5; results=${RESULTS:-$work/results}; opt=--short
+else
+  tend=20; stop_n=200; stop_t=4; results=${RESULTS:-$here/results}; opt=
+fi
+rm -rf "$work"
+mkdir -p "$work" "$results" || exit 2
+scenes="$root/input_scripts/liggghts"
+
+run_scene() { # $1 scene file, $2 tag, further args: -var pairs
+  in=$1; tag=$2; shift 2
+  t0=$(date +%s)
+  # shellcheck disable=SC2086
+  (cd "$work" && $mpirun "$exe" -in "$scenes/$in" -var tag "$tag" "$@" -log "log.$tag" -echo none \
+    -screen /dev/null) || { echo "run.sh: $in ($tag) failed, see $work/log.$tag" >&2; exit 2; }
+  echo "  $tag: $in $*: $(( $(date +%s) - t0 )) s, $(grep -c . "$work/${tag}_series.txt") output lines"
+}
+echo "grate scenes in $work (tend = $tend s per scene, 2 ranks, $exe)"
+run_scene grate_forward_2d.in fwd2d -var tend "$tend" || exit 2
+run_scene grate_forward_3d.in fwd3d -var tend "$tend" || exit 2
+run_scene grate_reverse_3d.in rev3d -var tend "$tend" || exit 2
+run_scene grate_forward_3d.in stop3d -var tend "$stop_t" -var stroke 0 -var npart "$stop_n" || exit 2
+run_scene grate_forward_3d.in stop3d_dt1 -var tend "$stop_t" -var stroke 0 -var npart "$stop_n" -var dt 1e-4 || exit 2
+echo "VTK files: $(ls "$work"/*.vtk | wc -l) (bars: <tag>_bars_<step>.vtk, particles: <tag>_atoms_<step>.vtk)"
+
+# shellcheck disable=SC2086
+/usr/bin/python3 "$here/analyse.py" "$work" "$results" $opt
+status=$?
+echo "results: $results (table.md, mixing_time.png, mixing_along.png, residence.png, checks.txt)"
+exit $status
