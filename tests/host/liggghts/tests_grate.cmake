@@ -17,3 +17,13 @@ foreach(_part kinematics carried rebound parallel bad 2d)
                        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
 set_tests_properties(liggghts.grate.parallel PROPERTIES PROCESSORS 2)
+# the three grate scenes (forward 2D/3D, reverse 3D, standing grate) in their short version on 2
+# ranks with the mixing analysis: runs, transports the bed, P' > 0, Q' of fix tdem/mixing/depth =
+# Q' recomputed from the dumped D (validation/grate/analyse.py checks; exit 1 if one fails)
+if(TDEM_LIGGGHTS_MIXING)
+  add_test(NAME liggghts.grate.scenes_short_transport_and_mixing
+           COMMAND sh ${PROJECT_SOURCE_DIR}/validation/grate/run.sh --short)
+  set_tests_properties(liggghts.grate.scenes_short_transport_and_mixing PROPERTIES
+                       LABELS liggghts TIMEOUT 600 PROCESSORS 2
+                       ENVIRONMENT "TDEM_LIGGGHTS=$<TARGET_FILE:tdem-liggghts>;WORKDIR=${_work}/grate_scenes")
+endif()
