@@ -186,11 +186,14 @@ inline State place(const Template& t, const Vec3& x, const Quat& q_template = Qu
 
 // ------------------------------------------------------------------ rotation update (L fixed)
 namespace detail {
-// Rotation of the body about its own principal axis i by angle phi: q <- q * dq(phi e_i).
-inline Quat rotate_body_axis(const Quat& q, int i, double phi) {
-  Vec3 psi{0, 0, 0};
-  psi[i] = phi;
-  return qmul(q, quat_from_rotation_vector(psi));
+// Rotation of the body about its own principal axis i by the angle phi: q <- q * dq(phi e_i),
+// with c = cos(phi/2), sn = sin(phi/2) given (the product written out).
+inline Quat rotate_body_axis_cs(const Quat& q, int i, double c, double sn) {
+  switch (i) {
+    case 0: return {q.w * c - q.x * sn, q.x * c + q.w * sn, q.y * c + q.z * sn, q.z * c - q.y * sn};
+    case 1: return {q.w * c - q.y * sn, q.x * c - q.z * sn, q.y * c + q.w * sn, q.z * c + q.x * sn};
+    default: return {q.w * c - q.z * sn, q.x * c + q.y * sn, q.y * c - q.x * sn, q.z * c + q.w * sn};
+  }
 }
 inline Quat dqdt(const Quat& q, const Vec3& omega) {  // (1/2) (0, omega) * q
   const Quat d = qmul(Quat{0.0, omega[0], omega[1], omega[2]}, q);
@@ -209,12 +212,21 @@ inline void rotate(State& s, const Body& b, double h, Rotation scheme) {
       return;
     }
     case Rotation::splitting: {
+      // The body-frame angular momentum pi = Lambda^T L is formed once; a sub-rotation by phi about
+      // body axis i turns it by -phi about that axis (L is fixed in space), so only its two other
+      // components change: one sin/cos pair per sub-rotation, no matrix per sub-step.
       static const int axis[5] = {0, 1, 2, 1, 0};
       static const double frac[5] = {0.5, 0.5, 1.0, 0.5, 0.5};
+      Vec3 pi = body_angular_momentum(s);
       for (int k = 0; k < 5; ++k) {
-        const int i = axis[k];
-        const double pi_i = body_angular_momentum(s)[i];
-        s.q = detail::rotate_body_axis(s.q, i, frac[k] * h * pi_i / b.inertia[i]);
+        const int i = axis[k], j = (i + 1) % 3, l = (i + 2) % 3;
+        const double half = 0.5 * frac[k] * h * pi[i] / b.inertia[i];
+        const double c = std::cos(half), sn = std::sin(half);
+        s.q = detail::rotate_body_axis_cs(s.q, i, c, sn);
+        const double cphi = c * c - sn * sn, sphi = 2.0 * sn * c;
+        const double pj = pi[j], pl = pi[l];
+        pi[j] = cphi * pj + sphi * pl;
+        pi[l] = cphi * pl - sphi * pj;
       }
       s.q = qnormalise(s.q);
       return;
