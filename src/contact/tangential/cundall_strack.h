@@ -99,12 +99,18 @@ TDEM_KERNEL void force(const Params<T>& p, const Kinematics<T>& kin, T fn, bool 
     const T fs = std::sqrt(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2]);
     if (fs > limit) {
       if (shrmag != T(0)) {
+        // written out per component: as a loop, hosts that inline the kernel (pair
+        // tdem/gran) kept it rolled and ft[] in memory (~25 more instructions per slip)
         const T ratio = limit / fs;
-        for (int k = 0; k < 3; ++k) {
-          const T dash = p.gammat * kin.vt[k] / p.kt;
-          shear[k] = ratio * (shear[k] + dash) - dash;
-          ft[k] *= ratio;
-        }
+        const T dash0 = p.gammat * kin.vt[0] / p.kt;
+        const T dash1 = p.gammat * kin.vt[1] / p.kt;
+        const T dash2 = p.gammat * kin.vt[2] / p.kt;
+        shear[0] = ratio * (shear[0] + dash0) - dash0;
+        shear[1] = ratio * (shear[1] + dash1) - dash1;
+        shear[2] = ratio * (shear[2] + dash2) - dash2;
+        ft[0] *= ratio;
+        ft[1] *= ratio;
+        ft[2] *= ratio;
       } else {
         ft[0] = ft[1] = ft[2] = T(0);
       }

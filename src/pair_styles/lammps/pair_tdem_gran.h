@@ -56,8 +56,10 @@ class PairTDEMGran : public Pair {
   double atom2cut(int) override;
   double radii2cut(double, double) override;
 
-  // evaluation body, instantiated per (mode, end, slip); public for the dispatcher
-  template <int M, int E, int S, int TL> void eval(int eflag, int vflag);
+  // evaluation body, instantiated per (mode, end, slip, tangential law) and ONE = 1 when every
+  // type pair has the same coefficients (no per-type lookups); public for the dispatcher
+  // (normal hertz with ONE: also the damping member D fixed)
+  template <int M, int E, int S, int TL, int ONE = 0, int D = -1> void eval(int eflag, int vflag);
 
   // read-only view for other tdem styles (fix tdem/timestep): the law of type pair (i, j),
   // 1 <= i, j <= number of types (valid where setflag[i][j] or after init_one), and the
@@ -78,6 +80,7 @@ class PairTDEMGran : public Pair {
   bool uniform;  // all set type pairs share mode, end and slip
   int umode, uend, uslip;
   int utlaw;  // the tangential law of all type pairs (TangentialLaw)
+  bool one_law;  // every type pair has the same LawCoeffs (set by init_one of the last type pair)
 
   class FixNeighHistory *fix_history;
   std::string id_history, id_dummy;

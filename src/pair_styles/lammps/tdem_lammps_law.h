@@ -230,7 +230,9 @@ std::string describe_law(const LawCoeffs &c);
 // also need the angular velocities omega_i, omega_j (omega_j = nullptr: a plane wall) for the
 // twist spin_n = (omega_i + omega_j)/2 . n, and take the turning rate of the normal
 // omega_t = n x (v_i - v_j)/r for a pair (radj > 0), 0 for a wall.
-template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK>
+//
+// D is the damping member of normal hertz (HertzDamping; used with E >= 0, -1 reads c.hdamp).
+template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK, int D = -1>
 inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, double dely,
                              double delz, double r, double rinv, double rsqinv, double overlap,
                              double vr1, double vr2, double vr3, double wr1, double wr2,
@@ -289,7 +291,17 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = reff;
-    const auto res = tdem::hertz::force(hertz_damping(c.hdamp), contact_end(end), hp, kin);
+    tdem::NormalResult<double> res;
+    if constexpr (D >= 0 && E >= 0) {
+      constexpr auto ce = E ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
+      res = tdem::hertz::force<D == HDAMP_LINEAR ? tdem::hertz::Damping::linear
+                               : D == HDAMP_KK   ? tdem::hertz::Damping::kuwabara_kono
+                               : D == HDAMP_TSUJI ? tdem::hertz::Damping::tsuji
+                                                  : tdem::hertz::Damping::general,
+                               ce>(hp, kin);
+    } else {
+      res = tdem::hertz::force(hertz_damping(c.hdamp), contact_end(end), hp, kin);
+    }
     ccel = res.force * rinv;
     kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * 2 E* a, tangent stiffness dF/dxi
