@@ -205,7 +205,7 @@ class Grate {
     for (int g : p_.row_group) ngroups = std::max(ngroups, g + 1);
     if (p_.group_phase.empty()) p_.group_phase.assign(ngroups, 0.0);
     if (static_cast<int>(p_.group_phase.size()) < ngroups)
-      bad_value("grate", "phase (number of values)", static_cast<double>(p_.group_phase.size()),
+      bad_value("grate", "group_phase (number of values)", static_cast<double>(p_.group_phase.size()),
                 "[" + std::to_string(ngroups) + ", inf) - one phase per phase group");
     for (double ph : p_.group_phase) validate_phase(ph);
     build_rest();
@@ -302,10 +302,10 @@ class Grate {
     }
     if (!p_.row_group.empty()) {
       if (static_cast<int>(p_.row_group.size()) != p_.rows)
-        bad_value(c, "moving (number of row entries)", static_cast<double>(p_.row_group.size()),
+        bad_value(c, "row_group (number of row entries)", static_cast<double>(p_.row_group.size()),
                   "{" + std::to_string(p_.rows) + "} - one entry per row");
       for (int g : p_.row_group)
-        if (g < -1) bad_value(c, "moving (phase group of a row)", g, "{-1 (fixed), 0, 1, ...}");
+        if (g < -1) bad_value(c, "row_group (phase group of a row)", g, "{-1 (fixed), 0, 1, ...}");
     }
     validate(p_.motion);
   }

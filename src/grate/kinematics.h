@@ -77,7 +77,7 @@ inline void validate(const MotionParams& m) {
   const std::string c = "grate motion";
   if (!(m.stroke >= 0.0) || !std::isfinite(m.stroke)) bad_value(c, "stroke", m.stroke, "[0, inf)");
   if (!(m.period > 0.0) || !std::isfinite(m.period)) bad_value(c, "period", m.period, "(0, inf)");
-  if (!std::isfinite(m.t_start)) bad_value(c, "start", m.t_start, "(-inf, inf)");
+  if (!std::isfinite(m.t_start)) bad_value(c, "t_start", m.t_start, "(-inf, inf)");
   if (!(m.dwell_out >= 0.0 && m.dwell_out < 1.0)) bad_value(c, "dwell_out", m.dwell_out, "[0, 1)");
   if (!(m.dwell_home >= 0.0 && m.dwell_home < 1.0)) bad_value(c, "dwell_home", m.dwell_home, "[0, 1)");
   if (!(m.dwell_out + m.dwell_home < 1.0))
@@ -88,7 +88,7 @@ inline void validate(const MotionParams& m) {
 }
 
 inline void validate_phase(double phase) {
-  if (!(phase >= 0.0 && phase < 1.0)) bad_value("grate motion", "phase", phase, "[0, 1)");
+  if (!(phase >= 0.0 && phase < 1.0)) bad_value("grate motion", "group_phase", phase, "[0, 1)");
 }
 
 // Displacement along the stroke direction, its rate and its second derivative.
