@@ -228,3 +228,46 @@ def bounce_checks(check, name, tag, z, vz, wy, xi, m, r, g, e_bound, lasting_req
         h1, h2 = tailxi[:len(tailxi) // 2].max(), tailxi[len(tailxi) // 2:].max()
         check(h2 <= h1 * (1 + 1e-4), "%s %s: lasting contact: the overlap amplitude does not grow "
               "(first half %.6e, second %.6e)" % (name, tag, h1, h2))
+
+
+# ---------------------------------------------------------------------------- clumps (issue 6)
+def lsd_k_gamma(e, tc, meff):
+    """lsd from restitution e and contact time t_c (zero-overlap end) for the effective mass m*:
+    k = m* (pi^2 + ln^2 e)/t_c^2, gamma = -2 m* ln e / t_c (physics_reference 2.1)."""
+    le = math.log(e)
+    return meff * (math.pi ** 2 + le * le) / tc ** 2, -2.0 * meff * le / tc
+
+
+def lsd_n_contacts(e, tc, n):
+    """N identical simultaneous lsd contacts (k -> N k, gamma -> N gamma, body mass M) of a body whose
+    single contact has e, t_c: e_N = exp(-pi sqrt(N) beta / sqrt(1 - N beta^2)),
+    t_N = pi / (omega_0 sqrt(N) sqrt(1 - N beta^2)) (physics_reference 6.4). Returns (e_N, t_N)."""
+    a = -math.log(e) / math.pi
+    beta = a / math.sqrt(1 + a * a)
+    w0 = math.pi / tc / math.sqrt(1 - beta * beta)
+    bn = math.sqrt(n) * beta
+    return math.exp(-math.pi * bn / math.sqrt(1 - bn * bn)), math.pi / (math.sqrt(n) * w0 * math.sqrt(1 - bn * bn))
+
+
+def cube8(c, d):
+    """2 x 2 x 2 sphere centres at spacing d around c (a face touches a plane with 4 spheres)."""
+    return [np.array(c) + d * np.array([i - 0.5, j - 0.5, k - 0.5]) for k in (0, 1) for j in (0, 1) for i in (0, 1)]
+
+
+def plate8(c, d):
+    """2 x 4 coplanar sphere centres at spacing d around c (8 spheres touch a plane at once)."""
+    return [np.array(c) + d * np.array([i - 1.5, j - 0.5, 0.0]) for j in (0, 1) for i in range(4)]
+
+
+def rigid_worst(fr, bodies_atoms):
+    """largest relative change over all frames of any sphere-sphere distance inside a body
+    (fr: dict of [frame, atom] arrays x y z; bodies_atoms: lists of 0-based atom columns)."""
+    worst = 0.0
+    P = np.stack([fr["x"], fr["y"], fr["z"]], axis=2)
+    for ids in bodies_atoms:
+        q = P[:, ids, :]
+        dd = np.sqrt(((q[:, :, None, :] - q[:, None, :, :]) ** 2).sum(axis=3))
+        iu = np.triu_indices(len(ids), 1)
+        dd = dd[:, iu[0], iu[1]]
+        worst = max(worst, float((np.abs(dd - dd[0]) / dd[0]).max()))
+    return worst

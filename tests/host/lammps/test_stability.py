@@ -21,8 +21,11 @@ Cases (see CASES at the end):
   power_law_repeated_loading_no_gain_no_attraction
   extended_laws_v0_1e-4_and_v_max_e_in_0_1
   rank_crossing_in_contact_np2_equals_np1
-  TODO(clumps): clump with 8+ simultaneous contacts (issue 6 host fixes, owner: clump module)
-  TODO(grate): particles on the moving grate (issue 7 host fixes, owner: grate module)
+  clump_8_simultaneous_contacts_no_energy_gain  cube8 / 2x4 plate flat on a wall (N = 4, 8 vs closed form),
+                                                cube8 on a fixed bed (16 contacts), cube8 on cube8 (9)
+  clump_pile_at_rest_no_creep                   40 tetra clumps settled, 3e4 steps at rest
+  grate_stopped_bed_at_rest_pprime_zero         P' of a bed on a stopped grate: exact rest and settled
+  grate_moving_bars_energy_bounded              E <= E0 + work of the bars, speeds bounded, outlet only
 """
 import math
 import os
@@ -581,6 +584,490 @@ def case_rank_crossing():
     chk.check(ke[-1] <= ke[0], "no kinetic energy gain over the collisions (%.6e -> %.6e J)" % (ke[0], ke[-1]))
 
 
+# ------------------------------------------------------------------------------------------
+# clumps (issue 6 module `clump`): 8+ simultaneous contacts, a pile at rest
+CL_R, CL_D, CL_RHO = 0.002, 0.0045, 2500.0
+CL_E, CL_TC = 0.8, 1e-4
+
+CLUMP_HEAD = """units si
+atom_style sphere
+atom_modify map array
+boundary {bnd}
+newton off
+comm_modify vel yes
+region box block {box} units box
+create_box 1 box
+fix pm all property/atom mol ghost yes
+"""
+
+
+def clump_data(path, bodies, fixed=(), box=(-0.05, 0.05, -0.05, 0.05, -0.01, 0.05)):
+    """bodies: list of (points, v); fixed: sphere centres of immobile spheres (mol 0).
+    Writes a data file with a Molecules section; returns the number of atoms."""
+    rows, vel, mol = [], [], []
+    for b, (pts, v) in enumerate(bodies, 1):
+        for p in pts:
+            rows.append(p)
+            vel.append(v)
+            mol.append(b)
+    for p in fixed:
+        rows.append(p)
+        vel.append((0.0, 0.0, 0.0))
+        mol.append(0)
+    n = len(rows)
+    L = ["stability clumps", "", "%d atoms" % n, "1 atom types", "",
+         "%r %r xlo xhi" % box[0:2], "%r %r ylo yhi" % box[2:4], "%r %r zlo zhi" % box[4:6], "",
+         "Atoms # sphere", ""]
+    L += ["%d 1 %r %r %r %r %r" % (i + 1, 2 * CL_R, CL_RHO, p[0], p[1], p[2]) for i, p in enumerate(rows)]
+    L += ["", "Velocities", ""] + ["%d %r %r %r 0 0 0" % ((i + 1,) + tuple(v)) for i, v in enumerate(vel)]
+    L += ["", "Molecules", ""] + ["%d %d" % (i + 1, m) for i, m in enumerate(mol)]
+    with open(path, "w") as f:
+        f.write("\n".join(L) + "\n")
+    return n
+
+
+
+
+
+
+def template_file(path, pts):
+    c = np.mean(pts, axis=0)
+    with open(path, "w") as f:
+        f.write("".join("sphere %.17g %.17g %.17g %.17g\n" % (tuple(p - c) + (CL_R,)) for p in pts))
+
+
+
+
+
+
+def clump_run(tag, wd, pts_bodies, fixed, inter, dt, nsteps, nbody_rows, every=20, gravity=0.0,
+              bnd="f f f", box=(-0.05, 0.05, -0.05, 0.05, -0.01, 0.05), tmpl=None):
+    natoms = clump_data(os.path.join(wd, "clump.data"), pts_bodies, fixed, box)
+    template_file(os.path.join(wd, "tmpl.txt"), tmpl if tmpl is not None else pts_bodies[0][0])
+    nb = sum(len(p) for p, _ in pts_bodies)
+    text = CLUMP_HEAD.format(bnd=bnd, box=" ".join(repr(b) for b in box))
+    text += "read_data clump.data add append fix pm NULL Molecules\n"
+    text += "group body id 1:%d\n" % nb
+    text += "neighbor 0.001 bin\nneigh_modify delay 0 every 1 check yes exclude molecule/intra body\n"
+    text += inter + "\n"
+    text += "fix c body tdem/clump template t file tmpl.txt density %r\n" % CL_RHO
+    if gravity:
+        text += "fix g body gravity %r vector 0 0 -1\n" % gravity
+    text += "timestep %r\n" % dt
+    cols = ["f_c", "f_c[8]", "f_c[9]"]
+    for b in range(1, nbody_rows + 1):
+        cols += ["f_c[%d][%d]" % (b, j) for j in range(2, 8)]
+    text += "thermo_style custom step atoms %s\nthermo_modify lost warn format float %%.17g\n" % " ".join(cols)
+    text += "thermo %d\n" % every
+    text += "dump d all custom %d dump.stab %s\ndump_modify d sort id format float %%.17g\n" % (every, COLS)
+    text += "run %d\n" % nsteps
+    _, out = lc.run(args["tdem"], text, wd, "in." + tag)
+    rows = np.array([[float(x) for x in r.split()] for r in lc.thermo_blocks(out) if r.split()[0] != "Step"])
+    steps, fr, bad = read_frames(os.path.join(wd, "dump.stab"), natoms)
+    basic_checks(tag, fr, bad, out, natoms)
+    chk.check(bool(np.all(np.isfinite(rows))), "%s: every output of fix tdem/clump is finite" % tag)
+    return rows, fr, natoms
+
+
+def case_clump_contacts():
+    """A cube8 clump (2 x 2 x 2 spheres) dropped flat onto a wall (4 spheres touch at once: the
+    face of a 2x2x2 cube), a 2 x 4 plate clump dropped flat (8 contacts at once), a cube8 dropped
+    onto a 3 x 3 bed of fixed spheres (each bottom sphere sits in a pocket of 4: 16 contacts at
+    once) and a cube8 onto a free cube8 shifted by (d/2, d/2) (9 contacts between two bodies).
+    lsd e = 0.8, t_c = 1e-4 s per contact (m* from the body masses), no gravity, no friction.
+    Asserts: no NaN, no lost atoms, kinetic energy (translation + rotation, fix output) after <=
+    before, e in [0, 1], sphere distances constant to 1e-12 relative, flat drops: e vs the
+    N-contact closed form (physics_reference 6.4) within the step error bounded by an independent
+    velocity-Verlet model of the N-fold spring-dashpot."""
+    v0 = 1.0
+    law = "normal lsd restitution %r %r tangential cundall_strack 0.8 0" % (CL_E, CL_TC)
+    M8 = 8 * S.sphere_mass(2 * CL_R, CL_RHO)          # non-overlapping spheres: exact union
+    # --- flat drops on a wall: N = 4 (cube8) and N = 8 (plate)
+    for name, maker, n in (("cube8 flat on wall", S.cube8, 4), ("plate 2x4 flat on wall", S.plate8, 8)):
+        wd = lc.workdir("clump_flat%d" % n)
+        k, g = S.lsd_k_gamma(CL_E, CL_TC, M8)
+        e_cf, t_n = S.lsd_n_contacts(CL_E, CL_TC, n)
+        dt = t_n / 2000.0
+        # the body starts exactly 20 steps before the first touch (zc chosen with dt = 2.5e-8)
+        pts = maker((0.0, 0.0, (CL_R if maker is S.plate8 else CL_R + 0.5 * CL_D) + 20 * dt * v0), CL_D)
+        nsteps = int(1.3 * t_n / dt) + 40
+        inter = "pair_style tdem/gran\npair_coeff * * %s\nfix w body tdem/wall/gran %s zplane 0 NULL" % (law, law)
+        rows, fr, natoms = clump_run(name.split()[0], wd, [(pts, (0, 0, -v0))], [], inter, dt, nsteps, 1, every=10)
+        ke = rows[:, 2]
+        vz = rows[:, 10]
+        e_m = vz[-1] / v0
+        e_v1 = S.verlet_impact_e(n * k, n * g, M8, v0, dt, 20)
+        e_v2 = S.verlet_impact_e(n * k, n * g, M8, v0, 2 * dt, 10)
+        tol = abs(e_v2 - e_cf) + abs(e_v1 - e_cf) + 1e-9
+        print("%s: N = %d, e %.7f, closed form %.7f, Verlet model at dt %.7f (2 dt %.7f), bound %.2e; "
+              "KE %.6e -> %.6e J" % (name, n, e_m, e_cf, e_v1, e_v2, tol, ke[0], ke[-1]))
+        chk.check(abs(e_m - e_cf) <= tol, "%s: e %.7f = N = %d closed form %.7f within the step error bound %.2e"
+                  % (name, e_m, n, e_cf, tol))
+        chk.check(0 <= e_m <= 1 and ke[-1] <= ke[0] * (1 + 1e-12),
+                  "%s: e in [0, 1] and kinetic energy after <= before" % name)
+        w = S.rigid_worst(fr, [list(range(8))])
+        chk.check(w <= 1e-12, "%s: clump rigid (sphere distances to %.2g relative <= 1e-12)" % (name, w))
+    # --- cube8 onto a 3x3 bed of fixed spheres (16 contacts) and onto a free cube8 (9 contacts)
+    bed = [(i * CL_D, j * CL_D, 0.0) for i in (-1, 0, 1) for j in (-1, 0, 1)]
+    hz = math.sqrt((2 * CL_R) ** 2 - 0.5 * CL_D ** 2)   # vertical distance at touch of a pocket sphere
+    dt = 2.5e-8
+    pts = S.cube8((0.0, 0.0, hz + 0.5 * CL_D + 20 * dt * v0), CL_D)
+    wd = lc.workdir("clump_bed")
+    inter = "pair_style tdem/gran\npair_coeff * * %s" % law
+    rows, fr, natoms = clump_run("bed", wd, [(pts, (0, 0, -v0))], bed, inter, dt, 6000, 1, every=10)
+    P = np.stack([fr["x"], fr["y"], fr["z"]], axis=2)
+    dmat = np.sqrt(((P[:, :8, None, :] - P[:, None, 8:, :]) ** 2).sum(axis=3))
+    ncont = (dmat < 2 * CL_R).sum(axis=(1, 2))
+    ke = rows[:, 2]
+    e_m = rows[-1, 10] / v0
+    print("cube8 on fixed bed: max simultaneous contacts %d, e %.6f, KE %.6e -> %.6e J, rot KE at end %.3e"
+          % (ncont.max(), e_m, ke[0], ke[-1], rows[-1, 4]))
+    chk.check(ncont.max() >= 16, "cube8 on fixed bed: 16 contacts at once (%d)" % ncont.max())
+    chk.check(ncont[-1] == 0 and 0 <= e_m <= 1 and ke[-1] <= ke[0] * (1 + 1e-12),
+              "cube8 on fixed bed: rebounds, e %.4f in [0, 1], kinetic energy after <= before" % e_m)
+    w = S.rigid_worst(fr, [list(range(8))])
+    chk.check(w <= 1e-12, "cube8 on fixed bed: clump rigid (%.2g <= 1e-12)" % w)
+    # two free bodies: lower cube at rest, upper shifted by (d/2, d/2): its (+,+) bottom sphere sits in the
+    # pocket of the 4 top spheres of the lower cube, 2 more each touch 2, one touches 1: 9 contacts
+    low = S.cube8((0.0, 0.0, 0.0), CL_D)
+    zt = 0.5 * CL_D + hz + 0.5 * CL_D + 20 * dt * v0
+    up = S.cube8((-0.5 * CL_D, -0.5 * CL_D, zt), CL_D)
+    wd = lc.workdir("clump_pair")
+    rows, fr, natoms = clump_run("pair", wd, [(low, (0, 0, 0)), (up, (0, 0, -v0))], [], inter, dt, 8000, 2, every=10)
+    P = np.stack([fr["x"], fr["y"], fr["z"]], axis=2)
+    dmat = np.sqrt(((P[:, :8, None, :] - P[:, None, 8:, :]) ** 2).sum(axis=3))
+    ncont = (dmat < 2 * CL_R).sum(axis=(1, 2))
+    ke = rows[:, 2]
+    vrel0 = -v0
+    vrel1 = rows[-1, 16] - rows[-1, 10]      # body 2 vz - body 1 vz
+    e_m = -vrel1 / vrel0
+    print("cube8 on free cube8: max simultaneous contacts %d, e %.6f, KE %.6e -> %.6e J (rot %.3e)"
+          % (ncont.max(), e_m, ke[0], ke[-1], rows[-1, 4]))
+    chk.check(ncont.max() >= 8, "cube8 on cube8: 8+ contacts at once between two bodies (%d)" % ncont.max())
+    chk.check(0 <= e_m <= 1 and ke[-1] <= ke[0] * (1 + 1e-12),
+              "cube8 on cube8: e %.4f in [0, 1], kinetic energy after <= before" % e_m)
+    w = S.rigid_worst(fr, [list(range(8)), list(range(8, 16))])
+    chk.check(w <= 1e-12, "cube8 on cube8: both clumps rigid (%.2g <= 1e-12)" % w)
+
+
+PILE = """units si
+atom_style sphere
+boundary p p f
+newton off
+comm_modify vel yes
+atom_modify map array
+region box block 0 {L} 0 {L} 0 0.08 units box
+create_box 1 box
+fix pm all property/atom mol ghost yes
+region ins block 0.0 {L} 0.0 {L} 0.003 0.05 units box
+fix c all tdem/clump template tet shape tetra {r} {d} density 2500 insert {n} region ins seed 4711
+neighbor 0.001 bin
+neigh_modify delay 0 every 1 check yes exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution {e} {tc} tangential cundall_strack {kappa} {mu}
+fix floor all tdem/wall/gran normal lsd restitution {e} {tc} tangential cundall_strack {kappa} {mu} zplane 0 NULL
+fix g all gravity {g} vector 0 0 -1
+timestep {dt}
+variable pe equal mass(all)*{g}*xcm(all,z)
+thermo_style custom step atoms f_c v_pe
+thermo_modify format float %.17g lost warn
+thermo 1000
+run {nsettle}
+thermo 100
+dump d all custom 500 dump.pile id mol mass radius x y z vx vy vz
+dump_modify d sort id format float %.17g
+run {nrest}
+"""
+
+
+def pile_energy(fr, L, r, e, tc, g, kappa, mu):
+    """per frame: gravity potential, elastic energy of the lsd normal springs (sphere pairs of
+    different bodies: m* = M1 M2/(M1 + M2), floor: m* = M) and the bound sum (mu F_n)^2/(2 k_t)
+    of the energy the Cundall-Strack springs (k_t = kappa k) can hold; periodic x, y."""
+    M = {}
+    mol = fr["mol"][0].astype(int)
+    for b in set(mol):
+        M[b] = float(fr["mass"][0][mol == b].sum())
+    c = (math.pi ** 2 + math.log(e) ** 2) / tc ** 2           # k = m* c
+    pe, el, wt = [], [], []
+    for f in range(len(fr["x"])):
+        p = np.stack([fr["x"][f], fr["y"][f], fr["z"][f]], axis=1)
+        dv = p[:, None, :] - p[None, :, :]
+        dv[:, :, :2] -= L * np.round(dv[:, :, :2] / L)
+        dd = np.sqrt((dv ** 2).sum(axis=2))
+        xi = np.triu(np.maximum(2 * r - dd, 0.0) * (mol[:, None] != mol[None, :]), 1)
+        i, j = np.nonzero(xi)
+        ms = np.array([M[mol[a]] * M[mol[b]] / (M[mol[a]] + M[mol[b]]) for a, b in zip(i, j)])
+        kp = ms * c
+        xw = np.maximum(r - p[:, 2], 0.0)
+        kw = np.array([M[m] for m in mol]) * c
+        el.append(0.5 * float(np.sum(kp * xi[i, j] ** 2) + np.sum(kw * xw ** 2)))
+        wt.append(float(np.sum((mu * kp * xi[i, j]) ** 2 / (2 * kappa * kp)) + np.sum((mu * kw * xw) ** 2 / (2 * kappa * kw))))
+        pe.append(float(np.sum(fr["mass"][f] * g * p[:, 2])))
+    return np.array(pe), np.array(el), np.array(wt)
+
+
+def case_clump_pile():
+    """40 tetra clumps (4 overlapping spheres each) inserted at random, poured onto the floor of a
+    box periodic in x and y (lsd e = 0.3, Cundall-Strack mu = 0.4, gravity), settled for 6e4 steps,
+    then left for 3e4 more steps. Asserts: no NaN, no lost atoms; the kinetic energy (fix output:
+    translation + rotation of the bodies) has decayed to < 1e-6 of its peak and stays below
+    1e-9 m_tot g d (lifting the pile by 1e-9 of a sphere diameter) at rest; no creep (centre of mass
+    height range < 0.1 M g/k, a tenth of the static overlap of one body on one floor contact, and its
+    drift in the second half of the rest phase not larger than in the first); no energy gain: KE + gravity + elastic energy of the normal springs
+    never rises by more than the energy the tangential springs can hold at the earlier frame,
+    sum (mu F_n)^2/(2 k_t) (+ 1e-15 of the potential energy for round-off)."""
+    p = dict(L=0.025, r=0.002, d=0.003, n=40, e=0.3, tc=1e-4, kappa=0.8, mu=0.4, g=9.81, dt=5e-6,
+             nsettle=60000, nrest=30000)
+    wd = lc.workdir("clump_pile")
+    _, out = lc.run(args["tdem"], PILE.format(**p), wd, "in.pile")
+    rows = [r.split() for r in lc.thermo_blocks(out) if r.split()[0] != "Step"]
+    a = np.array(rows, dtype=float)
+    natoms = 4 * p["n"]
+    chk.check(bool(np.all(np.isfinite(a))) and bool(np.all(a[:, 1] == natoms)) and "Lost atoms" not in out,
+              "pile: thermo finite, no lost atoms (%s, expected %d)" % (sorted(set(a[:, 1].astype(int))), natoms))
+    cols = "id mol mass radius x y z vx vy vz".split()
+    steps, fr, bad = S.read_frames(os.path.join(wd, "dump.pile"), natoms, cols)
+    finite = all(np.all(np.isfinite(v)) for v in fr.values())
+    chk.check(finite and bad == 0, "pile: every dumped value finite, every frame has %d atoms" % natoms)
+    mt = float(fr["mass"][0].sum())
+    rest = a[a[:, 0] >= p["nsettle"]]
+    ke_peak = float(a[:, 2].max())
+    ke_rest = float(rest[:, 2].max())
+    scale = mt * p["g"] * 2 * p["r"]
+    zc = rest[:, 3] / (mt * p["g"])
+    creep = float(zc.max() - zc.min())
+    print("pile: KE peak %.4e J, at the end of the settle %.4e J, max over the %d rest steps %.4e J "
+          "(m g d = %.4e J); centre of mass height range %.3e m" % (ke_peak, rest[0, 2], p["nrest"], ke_rest,
+                                                                  scale, creep))
+    chk.check(rest[0, 2] <= 1e-6 * ke_peak, "pile: kinetic energy decayed to %.2e of its peak (<= 1e-6)"
+              % (rest[0, 2] / ke_peak))
+    chk.check(ke_rest <= 1e-9 * scale, "pile at rest: KE stays near zero (max %.3e <= 1e-9 m g d = %.3e J)"
+              % (ke_rest, 1e-9 * scale))
+    # creep scale: the static overlap of one body resting on one floor contact, xi_g = M g / k_wall
+    mb = mt / p["n"]
+    xi_g = mb * p["g"] / (mb * (math.pi ** 2 + math.log(p["e"]) ** 2) / p["tc"] ** 2)
+    h = len(zc) // 2
+    d1, d2 = abs(zc[h] - zc[0]), abs(zc[-1] - zc[h])
+    print("pile at rest: com height drift first half %.3e m, second half %.3e m (xi_g = M g/k = %.3e m)" % (d1, d2, xi_g))
+    chk.check(creep <= 0.1 * xi_g and d2 <= max(d1, 1e-3 * xi_g),
+              "pile at rest: no creep (com height range %.3e m <= 0.1 M g/k = %.3e m; drift does not grow: %.2e, %.2e)"
+              % (creep, 0.1 * xi_g, d1, d2))
+    pe, el, wt = pile_energy(fr, p["L"], p["r"], p["e"], p["tc"], p["g"], p["kappa"], p["mu"])
+    kemap = dict(zip(a[:, 0].astype(int), a[:, 2]))
+    ke = np.array([kemap[s] for s in steps])
+    E = ke + pe + el
+    rise = np.diff(E)
+    allow = wt[:-1] + 1e-15 * np.abs(pe[:-1])
+    tot = E[-1] - E[0]
+    print("pile at rest: E = KE + gravity + normal elastic %.12e -> %.12e J; largest rise between frames %.3e J "
+          "(allowed: tangential spring energy bound %.3e J); elastic %.3e J" % (E[0], E[-1], rise.max(), allow.min(),
+                                                                               el[0]))
+    chk.check(bool(np.all(rise <= allow)) and tot <= allow[0],
+              "pile at rest: no energy gain (largest rise %.3e J <= tangential spring bound, overall %.3e J)"
+              % (rise.max(), tot))
+
+
+# ------------------------------------------------------------------------------------------
+# grate (issue 7 modules `grate`, `mixing`): stopped bed at rest, moving bars
+GR_R, GR_RHO = 0.0025, 2500.0
+GR_LAW = "normal lsd restitution 0.3 2e-4 tangential cundall_strack 0.8 0.4"
+GR_E, GR_TC = 0.3, 2e-4
+
+GRATE_HEAD = """units si
+atom_style sphere
+atom_modify map array
+boundary f p f
+newton off
+comm_modify vel yes
+read_data grate.data
+neighbor 0.001 bin
+neigh_modify delay 0 every 1 check yes
+pair_style tdem/gran
+pair_coeff * * {law}
+fix gr all tdem/grate {law} {grate}
+"""
+
+
+def grate_lattice_data(path, nx, ny, nz, L0, ytot, zlo, zhi, lift=0.0, vx=0.0, x0=0.0):
+    """simple cubic lattice of touching spheres (spacing exactly 2r) resting with zero overlap on a
+    flat top face at z = 0 (first layer centre z = r + lift), y periodic with box length ny 2r."""
+    rows = []
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                rows.append((x0 + GR_R + 2 * GR_R * i, -0.5 * ytot + GR_R + 2 * GR_R * j, GR_R + lift + 2 * GR_R * k))
+    with open(path, "w") as f:
+        f.write("grate lattice\n\n%d atoms\n1 atom types\n%r %r xlo xhi\n%r %r ylo yhi\n%r %r zlo zhi\n\n"
+                "Atoms # sphere\n\n" % (len(rows), L0[0], L0[1], -0.5 * ytot, 0.5 * ytot, zlo, zhi))
+        for n, (x, y, z) in enumerate(rows, 1):
+            f.write("%d 1 %r %r %r %r %r\n" % (n, 2 * GR_R, GR_RHO, x, y, z))
+        f.write("\nVelocities\n\n")
+        for n in range(1, len(rows) + 1):
+            f.write("%d %r 0 0 0 0 0\n" % (n, vx))
+    return len(rows)
+
+
+def case_grate_stopped():
+    """Spheres on a STOPPED grate (3 rows, the middle one a 'moving' row with stroke 0), compute
+    tdem/mixing/velocity.
+    (a) exact rest, no gravity: a simple cubic lattice (2 layers, 24 x 8 spheres, y periodic) of
+        touching spheres (spacing exactly 2r) on the bar tops with zero overlap, zero velocities,
+        2000 steps. The only forces are those of overlaps of the order of the round-off of the
+        positions, |xi| <= 4 eps |x|max (eps = 2^-52); with k of the lsd law they change a velocity
+        by at most N dt k |xi|/m, and P' <= 2 sqrt(3) max|v| (each p_k <= 2 max|v_k|). Asserted:
+        P' <= that bound at every sampled step (measured: exactly 0).
+    (b) settled under gravity: the same lattice, g = 9.81, 2e4 steps (2000 contact damping times
+        t_c/ln(1/e)): P' <= 1e-3 g/omega n_layers, a thousandth of the velocity scale of the static
+        compression of the column (omega = sqrt(k/m)); no lost atoms, nothing moves along x by more
+        than the static overlap."""
+    grate = "rows 3 bar_length 0.04 bar_height 0.02 step_height 0 declination 0 width 0.04 stroke 0 period 0.2"
+    m = S.sphere_mass(2 * GR_R, GR_RHO)
+    k = m * (math.pi ** 2 + math.log(GR_E) ** 2) / GR_TC ** 2       # pair k uses m* = m/2: k/2 <= this
+    omega = math.sqrt(k / m)
+    dt = GR_TC / 40
+    for tag, g, nsteps in (("exact_rest", 0.0, 2000), ("settled", 9.81, 20000)):
+        wd = lc.workdir("grate_" + tag)
+        n = grate_lattice_data(os.path.join(wd, "grate.data"), 24, 8, 2, (-0.01, 0.13), 0.04, -0.05, 0.05)
+        text = GRATE_HEAD.format(law=GR_LAW, grate=grate)
+        if g:
+            text += "fix g all gravity %r vector 0 0 -1\n" % g
+        text += "fix nve all nve/sphere\ntimestep %r\n" % dt
+        text += "compute mix all tdem/mixing/velocity radius 0.011 bins x 0 0.12 3 periodic y\n"
+        text += "compute vmax all reduce max vx vy vz\ncompute vmin all reduce min vx vy vz\n"
+        text += ("thermo_style custom step atoms c_mix c_vmax[1] c_vmax[2] c_vmax[3] c_vmin[1] c_vmin[2] c_vmin[3] ke\n"
+                 "thermo_modify lost warn format float %%.17g\nthermo %d\nrun %d\n" % (nsteps // 20, nsteps))
+        text += "write_dump all custom dump.end id x y z vx vy vz modify sort id format float %.17g\n"
+        _, out = lc.run(args["tdem"], text, wd, "in." + tag)
+        a = np.array([r.split() for r in lc.thermo_blocks(out) if r.split()[0] != "Step"], dtype=float)
+        chk.check(bool(np.all(np.isfinite(a))) and bool(np.all(a[:, 1] == n)) and "Lost atoms" not in out,
+                  "%s: finite, no lost atoms (%d)" % (tag, n))
+        pp = a[:, 2]
+        vabs = np.abs(a[:, 3:9]).max()
+        if not g:
+            eps = 2.0 ** -52
+            xi = 4 * eps * 0.13
+            vb = nsteps * dt * k * xi / m * 6        # up to 6 neighbours
+            pb = 2 * math.sqrt(3) * vb
+            print("exact rest: P' max %.3e m/s (bound %.3e m/s from |xi| <= %.2e m), max |v| %.3e m/s"
+                  % (pp.max(), pb, xi, vabs))
+            chk.check(pp.max() <= pb and vabs <= vb,
+                      "exact rest on the stopped grate: P' = 0 within round-off (%.3e <= %.3e m/s)" % (pp.max(), pb))
+        else:
+            pb = 1e-3 * g / omega * 2
+            cols, end = lc.read_dump(os.path.join(wd, "dump.end"))
+            x0 = np.array([GR_R + 2 * GR_R * i for _ in range(16) for i in range(24)])
+            dx = float(np.abs(end[:, 1] - x0).max())
+            xs = 2 * m * g / k
+            print("settled: P' at the end %.3e m/s (bound 1e-3 n g/omega = %.3e m/s), max |v| %.3e m/s, "
+                  "largest x displacement %.3e m (static overlap scale 2 m g/k = %.3e m)" % (pp[-1], pb, vabs, dx, xs))
+            chk.check(pp[-1] <= pb, "settled bed on the stopped grate: P' %.3e <= %.3e m/s" % (pp[-1], pb))
+            chk.check(dx <= xs, "settled bed: no sphere drifts along the grate (%.3e <= %.3e m)" % (dx, xs))
+
+
+def case_grate_moving():
+    """Spheres on a moving grate: 3 flat rows (step 5 mm, no gaps, all rows moving together in phase
+    group 0, sinusoidal stroke 0.02 m at 5 Hz, slow outward stroke (forward_share 0.8) and quick return,
+    which transports by stick-slip: bar speed <= U = pi stroke/(2 0.2 T)), a fixed inlet wall at
+    x = stroke (row 0 always reaches under it), gravity, lsd e = 0.3 + Cundall-Strack; spheres that fall off the last row leave through the
+    floor of the box (the outlet). Energy balance with the work of the bars (fix output: total force
+    of the particles on the boxes and the stroke velocity, all boxes move with the same velocity):
+      E(t) = sum 1/2 m v^2 + 1/5 m r^2 w^2 + m g (z - z_lo) <= E(0) + W(t),  W = -int F_box . v_bar dt
+    (contacts only dissipate and start without overlap; atoms leaving carry E_i >= 0 away), so every
+    particle's speed is bounded by |v_i| <= sqrt(2 (E(0) + W(t))/m_i). Asserted: no NaN, atoms are
+    lost only through the outlet (last seen beyond the last row's heel, falling), E(t) <= E(0) + W(t)
+    (+ 1 % of the integrated |power| for the rectangle rule of W, + 1e-12 E(0) round-off), every speed below its bound, and
+    the brief's a-priori bound 1/2 m |v|^2 <= 1/2 m (U + sqrt(2 g H))^2 (H: start height above zlo)."""
+    stroke, T, sf = 0.02, 0.2, 0.8
+    U = math.pi * stroke / (2 * min(sf, 1 - sf) * T)   # sinusoidal: pi stroke/(2 d), d the shorter stroke
+    L, rows, step = 0.03, 3, 0.005
+    grate = ("rows %d bar_length %r bar_height 0.02 step_height %r declination 0 width 0.04 row_group 0 0 0 "
+             "stroke %r period %r forward_share %r profile sinusoidal" % (rows, L, step, stroke, T, sf))
+    dt = GR_TC / 40
+    nsteps = 60000                                     # 1.5 s: 7.5 strokes
+    wd = lc.workdir("grate_moving")
+    zlo = -0.02                                       # outlet: the floor of the box, below the last top face
+    n = grate_lattice_data(os.path.join(wd, "grate.data"), 12, 8, 2, (-0.01, 0.2), 0.04, zlo, 0.05, lift=1e-4,
+                           x0=stroke)
+    text = GRATE_HEAD.format(law=GR_LAW, grate=grate)
+    # the inlet wall stands at x = stroke: row 0 (heel at u in [0, stroke]) always covers x >= stroke
+    text += "fix inlet all tdem/wall/gran %s xplane %r NULL\n" % (GR_LAW, stroke)
+    text += "fix g all gravity 9.81 vector 0 0 -1\nfix nve all nve/sphere\ntimestep %r\n" % dt
+    text += ("thermo_style custom step atoms f_gr[1] f_gr[2] f_gr[3] f_gr[5]\n"
+             "thermo_modify lost ignore format float %.17g\nthermo 1\n")
+    text += "dump d all custom 100 dump.gm id mass radius x y z vx vy vz omegax omegay omegaz\n"
+    text += "dump_modify d sort id format float %%.17g\nrun %d\n" % nsteps
+    _, out = lc.run(args["tdem"], text, wd, "in.moving")
+    a = np.array([r.split() for r in lc.thermo_blocks(out) if r.split()[0] != "Step"], dtype=float)
+    chk.check(bool(np.all(np.isfinite(a))), "moving grate: thermo (atoms, bar forces, stroke velocity) finite")
+    # frames with a varying atom count
+    frames = {}
+    with open(os.path.join(wd, "dump.gm")) as f:
+        lines = f.read().split("\n")
+    i = 0
+    while i < len(lines):
+        if lines[i].startswith("ITEM: TIMESTEP"):
+            st, m_ = int(lines[i + 1]), int(lines[i + 3])
+            frames[st] = np.array(" ".join(lines[i + 9:i + 9 + m_]).split(), dtype=float).reshape(m_, 12)
+            i += 9 + m_
+        else:
+            i += 1
+    steps = sorted(frames)
+    finite = all(np.all(np.isfinite(frames[s])) for s in steps)
+    chk.check(finite, "moving grate: every dumped position, velocity and spin is finite")
+    # work of the bars: power on the particles = -F_box . (u' e_x), rectangle rule on the per-step output
+    pw = -a[:, 2] * a[:, 5]
+    W = np.concatenate([[0.0], np.cumsum(pw[1:] * dt)])
+    Wabs = np.concatenate([[0.0], np.cumsum(np.abs(pw[1:]) * dt)])
+    wmap = dict(zip(a[:, 0].astype(int), zip(W, Wabs)))
+
+    def energy(fr):
+        m, r = fr[:, 1], fr[:, 2]
+        v2 = (fr[:, 6:9] ** 2).sum(axis=1)
+        w2 = (fr[:, 9:12] ** 2).sum(axis=1)
+        return 0.5 * m * v2 + 0.2 * m * r * r * w2 + m * 9.81 * (fr[:, 5] - zlo)
+
+    E0 = float(energy(frames[steps[0]]).sum())
+    H = float(frames[steps[0]][:, 5].max() - zlo)
+    vapriori = U + math.sqrt(2 * 9.81 * H)
+    worst_e, worst_v, worst_a, vmax = -1e300, 0.0, 0.0, 0.0
+    lost_ok, nlost = True, 0
+    prev = frames[steps[0]]
+    x_last_heel = (rows - 1) * L
+    for s in steps:
+        fr = frames[s]
+        Wt, Wa = wmap[s]
+        E = float(energy(fr).sum())
+        if s != steps[0]:
+            worst_e = max(worst_e, E - (E0 + Wt + 0.01 * Wa) - 1e-12 * E0)  # + round-off of the sums
+        v = np.sqrt((fr[:, 6:9] ** 2).sum(axis=1))
+        vmax = max(vmax, float(v.max()))
+        worst_v = max(worst_v, float((v / np.sqrt(2 * (E0 + Wt + 0.01 * Wa) / fr[:, 1])).max()))
+        worst_a = max(worst_a, float(v.max() / vapriori))
+        gone = np.setdiff1d(prev[:, 0], fr[:, 0])
+        for gid in gone:
+            row = prev[prev[:, 0] == gid][0]
+            nlost += 1
+            if not (row[3] > x_last_heel and row[8] < 0):
+                lost_ok = False
+                print("atom %d lost at x %.4f z %.4f vz %.3f (not at the outlet)" % (gid, row[3], row[5], row[8]))
+        prev = fr
+    natoms_end = len(frames[steps[-1]])
+    print("moving grate: U = %.4f m/s, %d of %d spheres left through the outlet, bars' work %.4e J "
+          "(integrated |power| %.4e J), E(0) %.4e J; max speed %.4f m/s (a-priori U + sqrt(2 g H) = %.4f m/s); "
+          "largest E - (E0 + W + 1 %% |W|) %.3e J; worst speed / energy bound %.3f"
+          % (U, nlost, n, W[-1], Wabs[-1], E0, vmax, vapriori, worst_e, worst_v))
+    chk.check(int(a[-1, 1]) == natoms_end and n - natoms_end == nlost,
+              "moving grate: atom count consistent (%d left, thermo %d)" % (nlost, int(a[-1, 1])))
+    chk.check(lost_ok, "moving grate: atoms are lost only through the outlet (%d, beyond x = %.3f, falling)"
+              % (nlost, x_last_heel))
+    chk.check(nlost > 0, "moving grate: the bars transport spheres to the outlet (%d left)" % nlost)
+    chk.check(worst_e <= 0, "moving grate: E(t) <= E(0) + work of the bars at every frame (worst %.3e J)" % worst_e)
+    chk.check(worst_v <= 1, "moving grate: every particle speed below sqrt(2 (E0 + W)/m) (worst ratio %.3f)" % worst_v)
+    chk.check(worst_a <= 1, "moving grate: every speed below U + sqrt(2 g H) = %.3f m/s (max %.3f)"
+              % (vapriori, vmax))
+
+
 CASES = {
     "dt_0p9_critical_linear_stable_0p5_no_energy_gain": case_dt_critical,
     "stiff_200gpa_hertz_impacts_0p001_and_100_mps_bounded": case_stiff,
@@ -593,8 +1080,10 @@ CASES = {
     "power_law_repeated_loading_no_gain_no_attraction": lambda: case_hysteretic("power_law"),
     "extended_laws_v0_1e-4_and_v_max_e_in_0_1": case_extended,
     "rank_crossing_in_contact_np2_equals_np1": case_rank_crossing,
-    # TODO(clumps): "clump_8_contacts_no_energy_gain" once the clump host fixes land (issue 6)
-    # TODO(grate): "grate_bed_no_lost_atoms" once the grate host fixes land (issue 7)
+    "clump_8_simultaneous_contacts_no_energy_gain": case_clump_contacts,
+    "clump_pile_at_rest_no_creep": case_clump_pile,
+    "grate_stopped_bed_at_rest_pprime_zero": case_grate_stopped,
+    "grate_moving_bars_energy_bounded": case_grate_moving,
 }
 
 if __name__ == "__main__":

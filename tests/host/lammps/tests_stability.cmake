@@ -1,8 +1,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # Stability suite (issue 8): one ctest per hard case, named after what it proves
 # (test_stability.py --case NAME; closed forms in tests/host/stability_ref.py).
-# TODO(clumps): lammps.stability.clump_8_contacts_no_energy_gain when the clump host fixes land.
-# TODO(grate): lammps.stability.grate_bed_no_lost_atoms when the grate host fixes land.
+# The clump cases need the module `clump` (TDEM_LAMMPS_CLUMP), the grate cases `grate` and `mixing`.
 set(_stab_cases
     dt_0p9_critical_linear_stable_0p5_no_energy_gain
     stiff_200gpa_hertz_impacts_0p001_and_100_mps_bounded
@@ -15,6 +14,15 @@ set(_stab_cases
     power_law_repeated_loading_no_gain_no_attraction
     extended_laws_v0_1e-4_and_v_max_e_in_0_1
     rank_crossing_in_contact_np2_equals_np1)
+if(TDEM_LAMMPS_CLUMP)
+  list(APPEND _stab_cases clump_8_simultaneous_contacts_no_energy_gain clump_pile_at_rest_no_creep)
+endif()
+if(TDEM_LAMMPS_GRATE)
+  list(APPEND _stab_cases grate_moving_bars_energy_bounded)
+  if(TDEM_LAMMPS_MIXING)
+    list(APPEND _stab_cases grate_stopped_bed_at_rest_pprime_zero)
+  endif()
+endif()
 foreach(_c ${_stab_cases})
   add_test(NAME lammps.stability.${_c}
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_stability.py ${_args} --case ${_c})

@@ -14,8 +14,9 @@ rebuild, so the next contact of the same pair starts on the old unloading branch
 calls surfacesClose only for pairs inside contactDistanceFactor x radsum (1 by default), i.e.
 never for separated spheres. The wall contacts (per-atom history of fix wall/gran) are fine.
 
-TODO(clumps): clump with 8+ simultaneous contacts (issue 6 host fixes, owner: clump module).
-TODO(grate): particles on the moving grate (issue 7 host fixes, owner: grate module).
+Clumps and grate (issues 6, 7): clump_8_simultaneous_contacts_no_energy_gain, clump_pile_at_rest_no_creep,
+grate_stopped_bed_at_rest_pprime_zero, grate_moving_bars_energy_bounded (as in the LAMMPS suite; the
+LIGGGHTS grate bars are meshes of the stock wall/gran, the bars' work comes from the momentum balance).
 """
 import math
 import os
@@ -536,6 +537,408 @@ def case_rank_crossing():
         chk.check(ke[-1] <= ke[0], "%s: no kinetic energy gain over the collisions (%.6e -> %.6e J)" % (name, ke[0], ke[-1]))
 
 
+# ------------------------------------------------------------------------------------------
+# clumps (fix tdem/clump, issue 6): 8+ simultaneous contacts, a pile at rest
+CL_R, CL_D, CL_RHO = 0.002, 0.0045, 2500.0
+CL_E, CL_TC = 0.8, 1e-4
+CLUMP_HEAD = ["atom_style hybrid sphere molecular", "atom_modify map array", "boundary f f f", "newton off",
+              "communicate single vel yes", "units si"]
+
+
+
+
+
+
+
+
+
+
+def clump_run(tag, bodies, fixed, k, gamma, dt, nsteps, nbody_rows, every=10, wall=False):
+    """bodies: list of (points, v) with molecule IDs 1, 2, ...; fixed: immobile spheres (molecule 0).
+    lsd with absolute stiffness k and damping gamma (the same for every contact), no friction."""
+    wdname = "stab_clump_%s" % tag
+    wd = T.workdir(args, wdname)
+    pts = [p - np.mean(bodies[0][0], axis=0) for p in bodies[0][0]]
+    with open(os.path.join(wd, "tmpl.txt"), "w") as f:
+        f.write("".join("sphere %.17g %.17g %.17g %.17g\n" % (tuple(p) + (CL_R,)) for p in pts))
+    lines = list(CLUMP_HEAD) + ["region box block -0.05 0.05 -0.05 0.05 -0.01 0.05 units box", "create_box 1 box",
+                                "neighbor 0.001 bin", "neigh_modify delay 0 exclude molecule body"]
+    n = 0
+    for b, (ps, v) in enumerate(bodies, 1):
+        for p in ps:
+            n += 1
+            lines.append("create_atoms 1 single %.17g %.17g %.17g units box" % tuple(p))
+            lines.append("set atom %d diameter %.17g density %.17g" % (n, 2 * CL_R, CL_RHO))
+            lines.append("set atom %d mol %d vx %.17g vy %.17g vz %.17g" % ((n, b) + tuple(v)))
+    nb = n
+    for p in fixed:
+        n += 1
+        lines.append("create_atoms 1 single %.17g %.17g %.17g units box" % tuple(p))
+        lines.append("set atom %d diameter %.17g density %.17g" % (n, 2 * CL_R, CL_RHO))
+    lines.insert(len(CLUMP_HEAD) + 4, "group body id 1:%d" % nb)
+    # the group must exist before neigh_modify exclude: move the exclusion after the atoms
+    lines = [l for l in lines if not l.startswith("neigh_modify")]
+    lines.remove("group body id 1:%d" % nb)
+    lines += ["group body id 1:%d" % nb, "neigh_modify delay 0 exclude molecule body",
+              "fix m_kn all property/global kn peratomtypepair 1 %.17g" % k,
+              "fix m_kt all property/global kt peratomtypepair 1 %.17g" % k,
+              "fix m_gn all property/global gamman_abs peratomtypepair 1 %.17g" % gamma,
+              "fix m_gt all property/global gammat_abs peratomtypepair 1 0.0",
+              "fix m_mu all property/global coefficientFriction peratomtypepair 1 0.0",
+              "pair_style gran model tdem/lsd tangential no_history parameters stiffness absolute_damping on",
+              "pair_coeff * *", "timestep %.17g" % dt,
+              "fix c body tdem/clump template t file tmpl.txt density %.17g" % CL_RHO]
+    if wall:
+        lines.append("fix w body wall/gran model tdem/lsd tangential no_history primitive type 1 zplane 0.0 "
+                     "parameters stiffness absolute_damping on")
+    cols = ["f_c", "f_c[8]", "f_c[9]"]
+    for b in range(1, nbody_rows + 1):
+        cols += ["f_c[%d][%d]" % (b, j) for j in range(2, 8)]
+    lines += ["thermo_style custom step atoms %s" % " ".join(cols),
+              "thermo_modify lost warn norm no format float %.17g", "thermo %d" % every,
+              "dump d all custom %d dump.stab %s" % (every, " ".join(COLS)),
+              'dump_modify d sort id format "%%d %%d%s"' % (" %.17g" * (len(COLS) - 2)),
+              "run %d" % nsteps]
+    r = T.run(args.tdem, "\n".join(lines) + "\n", wd, tag, mpirun=args.mpirun)
+    out = r.stdout
+    rows = []
+    for header, rr in T.thermo_blocks(out):
+        rows += [[float(x) for x in l.split()] for l in rr]
+    rows = np.array(rows)
+    steps, fr, bad = S.read_frames(os.path.join(wd, "dump.stab"), n, COLS)
+    basic_checks(tag, fr, bad, out, n)
+    chk.check(bool(np.all(np.isfinite(rows))), "%s: every output of fix tdem/clump is finite" % tag)
+    return rows, fr, n
+
+
+def case_clump_contacts():
+    """As the LAMMPS case (tests/host/lammps/test_stability.py): cube8 flat on a wall (4 contacts at
+    once), a 2 x 4 plate flat on a wall (8), a cube8 onto a 3 x 3 bed of fixed spheres (16), a cube8
+    onto a free cube8 shifted by (d/2, d/2) (9). tdem/lsd with absolute k, gamma derived from e = 0.8,
+    t_c = 1e-4 s with the body mass M (LIGGGHTS passes the sphere mass as m*: `parameters restitution`
+    would scale with the sphere count), no friction, no gravity."""
+    v0 = 1.0
+    M8 = 8 * S.sphere_mass(2 * CL_R, CL_RHO)
+    k, g = S.lsd_k_gamma(CL_E, CL_TC, M8)
+    for name, maker, n in (("cube8 flat on wall", S.cube8, 4), ("plate 2x4 flat on wall", S.plate8, 8)):
+        e_cf, t_n = S.lsd_n_contacts(CL_E, CL_TC, n)
+        dt = t_n / 2000.0
+        pts = maker((0.0, 0.0, (CL_R if maker is S.plate8 else CL_R + 0.5 * CL_D) + 20 * dt * v0), CL_D)
+        nsteps = int(1.3 * t_n / dt) + 40
+        rows, fr, natoms = clump_run(name.split()[0], [(pts, (0, 0, -v0))], [], k, g, dt, nsteps, 1, wall=True)
+        ke = rows[:, 2]
+        e_m = rows[-1, 10] / v0
+        e_v1 = S.verlet_impact_e(n * k, n * g, M8, v0, dt, 20)
+        e_v2 = S.verlet_impact_e(n * k, n * g, M8, v0, 2 * dt, 10)
+        tol = abs(e_v2 - e_cf) + abs(e_v1 - e_cf) + 1e-9
+        print("%s: N = %d, e %.7f, closed form %.7f, Verlet model at dt %.7f (2 dt %.7f), bound %.2e; "
+              "KE %.6e -> %.6e J" % (name, n, e_m, e_cf, e_v1, e_v2, tol, ke[0], ke[-1]))
+        chk.check(abs(e_m - e_cf) <= tol, "%s: e %.7f = N = %d closed form %.7f within the step error bound %.2e"
+                  % (name, e_m, n, e_cf, tol))
+        chk.check(0 <= e_m <= 1 and ke[-1] <= ke[0] * (1 + 1e-12),
+                  "%s: e in [0, 1] and kinetic energy after <= before" % name)
+        w = S.rigid_worst(fr, [list(range(8))])
+        chk.check(w <= 1e-12, "%s: clump rigid (sphere distances to %.2g relative <= 1e-12)" % (name, w))
+    bed = [(i * CL_D, j * CL_D, 0.0) for i in (-1, 0, 1) for j in (-1, 0, 1)]
+    hz = math.sqrt((2 * CL_R) ** 2 - 0.5 * CL_D ** 2)
+    dt = 2.5e-8
+    pts = S.cube8((0.0, 0.0, hz + 0.5 * CL_D + 20 * dt * v0), CL_D)
+    rows, fr, natoms = clump_run("bed", [(pts, (0, 0, -v0))], bed, k, g, dt, 6000, 1)
+    P = np.stack([fr["x"], fr["y"], fr["z"]], axis=2)
+    dmat = np.sqrt(((P[:, :8, None, :] - P[:, None, 8:, :]) ** 2).sum(axis=3))
+    ncont = (dmat < 2 * CL_R).sum(axis=(1, 2))
+    ke = rows[:, 2]
+    e_m = rows[-1, 10] / v0
+    print("cube8 on fixed bed: max simultaneous contacts %d, e %.6f, KE %.6e -> %.6e J" % (ncont.max(), e_m, ke[0], ke[-1]))
+    chk.check(ncont.max() >= 16, "cube8 on fixed bed: 16 contacts at once (%d)" % ncont.max())
+    chk.check(ncont[-1] == 0 and 0 <= e_m <= 1 and ke[-1] <= ke[0] * (1 + 1e-12),
+              "cube8 on fixed bed: rebounds, e %.4f in [0, 1], kinetic energy after <= before" % e_m)
+    w = S.rigid_worst(fr, [list(range(8))])
+    chk.check(w <= 1e-12, "cube8 on fixed bed: clump rigid (%.2g <= 1e-12)" % w)
+    low = S.cube8((0.0, 0.0, 0.0), CL_D)
+    zt = 0.5 * CL_D + hz + 0.5 * CL_D + 20 * dt * v0
+    up = S.cube8((-0.5 * CL_D, -0.5 * CL_D, zt), CL_D)
+    rows, fr, natoms = clump_run("pair", [(low, (0, 0, 0)), (up, (0, 0, -v0))], [], k, g, dt, 8000, 2)
+    P = np.stack([fr["x"], fr["y"], fr["z"]], axis=2)
+    dmat = np.sqrt(((P[:, :8, None, :] - P[:, None, 8:, :]) ** 2).sum(axis=3))
+    ncont = (dmat < 2 * CL_R).sum(axis=(1, 2))
+    ke = rows[:, 2]
+    e_m = (rows[-1, 16] - rows[-1, 10]) / v0
+    print("cube8 on free cube8: max simultaneous contacts %d, e %.6f, KE %.6e -> %.6e J (rot %.3e)"
+          % (ncont.max(), e_m, ke[0], ke[-1], rows[-1, 4]))
+    chk.check(ncont.max() >= 8, "cube8 on cube8: 8+ contacts at once between two bodies (%d)" % ncont.max())
+    chk.check(0 <= e_m <= 1 and ke[-1] <= ke[0] * (1 + 1e-12),
+              "cube8 on cube8: e %.4f in [0, 1], kinetic energy after <= before" % e_m)
+    w = S.rigid_worst(fr, [list(range(8)), list(range(8, 16))])
+    chk.check(w <= 1e-12, "cube8 on cube8: both clumps rigid (%.2g <= 1e-12)" % w)
+
+
+def case_clump_pile():
+    """As the LAMMPS case: 40 tetra clumps inserted at random (fix tdem/clump insert), poured onto the
+    floor of a box periodic in x and y (tdem/lsd with absolute k, gamma from e = 0.3, t_c = 1e-4 s with
+    the body mass, tdem/cundall_strack k_t = 0.8 k, mu = 0.4, gravity), settled for 6e4 steps, then 3e4
+    steps at rest. Asserts: no NaN, no lost atoms, KE (fix output) decayed to < 1e-6 of its peak and
+    < 1e-9 m_tot g d at rest, no creep (com height range < 0.1 M g/k, drift not growing), no energy
+    gain: KE + gravity + normal spring energy rises between frames by no more than the energy the
+    tangential springs can hold, sum (mu F_n)^2/(2 k_t) (+ 1e-15 |PE| round-off)."""
+    L, r, dd, nc, e, tc, kappa, mu, g, dt = 0.025, 0.002, 0.003, 40, 0.3, 1e-4, 0.8, 0.4, 9.81, 5e-6
+    nsettle, nrest = 60000, 30000
+    wd = T.workdir(args, "stab_clump_pile")
+    # body mass from the union of the tetra (the fix's integration) is not known in closed form here:
+    # k and gamma are derived from the sum of the sphere volumes (an upper bound of M), any k works
+    mb = 4 * S.sphere_mass(2 * r, 2500.0)
+    k, gam = S.lsd_k_gamma(e, tc, mb)
+    lines = list(CLUMP_HEAD)
+    lines[2] = "boundary p p f"
+    lines += ["region box block 0 %r 0 %r 0 0.08 units box" % (L, L), "create_box 1 box",
+              "neighbor 0.001 bin", "neigh_modify delay 0 exclude molecule all",
+              "fix m_kn all property/global kn peratomtypepair 1 %.17g" % k,
+              "fix m_kt all property/global kt peratomtypepair 1 %.17g" % (kappa * k),
+              "fix m_gn all property/global gamman_abs peratomtypepair 1 %.17g" % gam,
+              "fix m_gt all property/global gammat_abs peratomtypepair 1 0.0",
+              "fix m_mu all property/global coefficientFriction peratomtypepair 1 %r" % mu,
+              "pair_style gran model tdem/lsd tangential tdem/cundall_strack parameters stiffness absolute_damping on",
+              "pair_coeff * *", "timestep %r" % dt,
+              "region ins block 0.0 %r 0.0 %r 0.003 0.05 units box" % (L, L),
+              "fix c all tdem/clump template tet shape tetra %r %r density 2500 insert %d region ins seed 4711" % (r, dd, nc),
+              "fix w all wall/gran model tdem/lsd tangential tdem/cundall_strack primitive type 1 zplane 0.0 "
+              "parameters stiffness absolute_damping on",
+              "fix g all gravity %r vector 0.0 0.0 -1.0" % g,
+              "thermo_style custom step atoms f_c", "thermo_modify lost warn norm no format float %.17g",
+              "thermo 1000", "run %d" % nsettle, "thermo 100",
+              "dump d all custom 500 dump.pile id mol mass radius x y z vx vy vz",
+              'dump_modify d sort id format "%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g"',
+              "run %d" % nrest]
+    res = T.run(args.tdem, "\n".join(lines) + "\n", wd, "pile", mpirun=args.mpirun)
+    out = res.stdout
+    a = []
+    for header, rr in T.thermo_blocks(out):
+        a += [[float(x) for x in l.split()] for l in rr]
+    a = np.array(a)
+    natoms = 4 * nc
+    chk.check(bool(np.all(np.isfinite(a))) and bool(np.all(a[:, 1] == natoms)) and "Lost atoms" not in out,
+              "pile: thermo finite, no lost atoms (%s, expected %d)" % (sorted(set(a[:, 1].astype(int))), natoms))
+    cols = "id mol mass radius x y z vx vy vz".split()
+    steps, fr, bad = S.read_frames(os.path.join(wd, "dump.pile"), natoms, cols)
+    finite = all(np.all(np.isfinite(v)) for v in fr.values())
+    chk.check(finite and bad == 0, "pile: every dumped value finite, every frame has %d atoms" % natoms)
+    mt = float(fr["mass"][0].sum())
+    rest = a[a[:, 0] >= nsettle]
+    ke_peak = float(a[:, 2].max())
+    ke_rest = float(rest[:, 2].max())
+    scale = mt * g * 2 * r
+    pe = (fr["mass"] * g * fr["z"]).sum(axis=1)
+    zc = pe / (mt * g)
+    creep = float(zc.max() - zc.min())
+    xi_g = (mt / nc) * g / k
+    h = len(zc) // 2
+    d1, d2 = abs(zc[h] - zc[0]), abs(zc[-1] - zc[h])
+    print("pile: KE peak %.4e J, at the end of the settle %.4e J, max over the %d rest steps %.4e J (m g d = %.4e J); "
+          "com height range %.3e m, drift first half %.3e, second half %.3e (M g/k = %.3e m)"
+          % (ke_peak, rest[0, 2], nrest, ke_rest, scale, creep, d1, d2, xi_g))
+    chk.check(rest[0, 2] <= 1e-6 * ke_peak, "pile: kinetic energy decayed to %.2e of its peak (<= 1e-6)" % (rest[0, 2] / ke_peak))
+    chk.check(ke_rest <= 1e-9 * scale, "pile at rest: KE stays near zero (max %.3e <= 1e-9 m g d = %.3e J)"
+              % (ke_rest, 1e-9 * scale))
+    chk.check(creep <= 0.1 * xi_g and d2 <= max(d1, 1e-3 * xi_g),
+              "pile at rest: no creep (com height range %.3e m <= 0.1 M g/k = %.3e m; drift %.2e, %.2e)"
+              % (creep, 0.1 * xi_g, d1, d2))
+    mol = fr["mol"][0].astype(int)
+    el, wt = [], []
+    for f in range(len(steps)):
+        p = np.stack([fr["x"][f], fr["y"][f], fr["z"][f]], axis=1)
+        dv = p[:, None, :] - p[None, :, :]
+        dv[:, :, :2] -= L * np.round(dv[:, :, :2] / L)
+        dist = np.sqrt((dv ** 2).sum(axis=2))
+        xi = np.triu(np.maximum(2 * r - dist, 0.0) * (mol[:, None] != mol[None, :]), 1)
+        xw = np.maximum(r - p[:, 2], 0.0)
+        s2 = float(np.sum(xi ** 2) + np.sum(xw ** 2))
+        el.append(0.5 * k * s2)
+        wt.append(mu * mu * k * k * s2 / (2 * kappa * k))
+    el, wt = np.array(el), np.array(wt)
+    kemap = dict(zip(a[:, 0].astype(int), a[:, 2]))
+    ke = np.array([kemap[s] for s in steps])
+    E = ke + pe + el
+    rise = np.diff(E)
+    allow = wt[:-1] + 1e-15 * np.abs(pe[:-1])
+    print("pile at rest: E = KE + gravity + normal elastic %.12e -> %.12e J; largest rise between frames %.3e J "
+          "(tangential spring bound >= %.3e J)" % (E[0], E[-1], rise.max(), allow.min()))
+    chk.check(bool(np.all(rise <= allow)) and E[-1] - E[0] <= allow[0],
+              "pile at rest: no energy gain (largest rise %.3e J <= tangential spring bound, overall %.3e J)"
+              % (rise.max(), E[-1] - E[0]))
+
+
+# ------------------------------------------------------------------------------------------
+# grate (fix tdem/grate meshes + stock wall/gran; compute tdem/mixing/velocity)
+GR_R, GR_RHO, GR_E, GR_TC = 0.0025, 2500.0, 0.3, 2e-4
+GR_PROPS = ["fix m_e all property/global coefficientRestitution peratomtypepair 1 %r" % GR_E,
+            "fix m_tc all property/global contactTime peratomtypepair 1 %r" % GR_TC,
+            "fix m_ka all property/global tangentialStiffnessRatio peratomtypepair 1 0.8",
+            "fix m_mu all property/global coefficientFriction peratomtypepair 1 0.4"]
+GR_LAW = "model tdem/lsd tangential tdem/cundall_strack"
+
+
+def grate_scene(grate, meshes, nx, ny, nz, box, x0=0.0, lift=0.0, gravity=0.0, extra=""):
+    """simple cubic lattice of touching spheres (spacing exactly 2r) on the flat top face z = 0,
+    y periodic with box length ny 2r."""
+    ytot = ny * 2 * GR_R
+    lines = ["atom_style granular", "atom_modify map array", "boundary f p f", "newton off",
+             "communicate single vel yes", "units si",
+             "region box block %r %r %r %r %r %r units box" % (box[0], box[1], -0.5 * ytot, 0.5 * ytot, box[2], box[3]),
+             "create_box 1 box", "neighbor 0.001 bin", "neigh_modify delay 0"] + GR_PROPS
+    lines += ["pair_style gran %s parameters restitution" % GR_LAW, "pair_coeff * *"]
+    n = 0
+    for k in range(nz):
+        for j in range(ny):
+            for i in range(nx):
+                n += 1
+                lines.append("create_atoms 1 single %r %r %r units box" % (
+                    x0 + GR_R + 2 * GR_R * i, -0.5 * ytot + GR_R + 2 * GR_R * j, GR_R + lift + 2 * GR_R * k))
+    lines += ["set group all diameter %r density %r" % (2 * GR_R, GR_RHO),
+              "fix gr all tdem/grate %s" % grate,
+              "fix walls all wall/gran %s mesh n_meshes %d meshes %s parameters restitution" % (GR_LAW, len(meshes), " ".join(meshes))]
+    if gravity:
+        lines.append("fix g all gravity %r vector 0.0 0.0 -1.0" % gravity)
+    lines += ["fix integr all nve/sphere", extra]
+    return "\n".join(lines) + "\n", n
+
+
+def case_grate_stopped():
+    """As the LAMMPS case: a stopped grate (3 rows, the middle one moving with stroke 0), a simple cubic
+    lattice 24 x 8 x 2 of touching spheres on the bar tops, compute tdem/mixing/velocity.
+    (a) exact rest, no gravity, 2000 steps: P' <= 2 sqrt(3) N dt 6 k |xi|/m with |xi| <= 4 eps |x|max
+        (forces of round-off overlaps only);
+    (b) settled under gravity, 2e4 steps (2000 damping times): P' <= 1e-3 n_layers g/omega, no sphere moves
+        along x by more than the static overlap scale 2 m g/k."""
+    grate = "rows 3 bar_length 0.04 bar_height 0.02 step_height 0 declination 0 width 0.04 stroke 0 period 0.2"
+    m = S.sphere_mass(2 * GR_R, GR_RHO)
+    k = m * (math.pi ** 2 + math.log(GR_E) ** 2) / GR_TC ** 2
+    omega = math.sqrt(k / m)
+    dt = GR_TC / 40
+    for tag, g, nsteps in (("exact_rest", 0.0, 2000), ("settled", 9.81, 20000)):
+        text, n = grate_scene(grate, ["gr_fixed", "gr_moving0"], 24, 8, 2, (-0.01, 0.13, -0.05, 0.05), gravity=g)
+        text += "timestep %r\n" % dt
+        text += "compute mix all tdem/mixing/velocity radius 0.011 bins x 0 0.12 3 periodic y\n"
+        text += ("compute vmax all reduce max vx vy vz\ncompute vmin all reduce min vx vy vz\n"
+                 "thermo_style custom step atoms c_mix c_vmax[1] c_vmax[2] c_vmax[3] c_vmin[1] c_vmin[2] c_vmin[3]\n"
+                 "thermo_modify lost warn norm no format float %%.17g\nthermo %d\nrun %d\n" % (nsteps // 20, nsteps))
+        text += ('dump d all custom 1 dump.end id x y z vx vy vz\n'
+                 'dump_modify d sort id format "%d %.17g %.17g %.17g %.17g %.17g %.17g"\nrun 0\n')
+        wd = T.workdir(args, "stab_grate_" + tag)
+        out = T.run(args.tdem, text, wd, tag, mpirun=args.mpirun).stdout
+        a = []
+        for header, rr in T.thermo_blocks(out):
+            a += [[float(x) for x in l.split()] for l in rr]
+        a = np.array(a)
+        chk.check(bool(np.all(np.isfinite(a))) and bool(np.all(a[:, 1] == n)) and "Lost atoms" not in out,
+                  "%s: finite, no lost atoms (%d)" % (tag, n))
+        pp = a[:, 2]
+        vabs = np.abs(a[:, 3:9]).max()
+        if not g:
+            xi = 4 * 2.0 ** -52 * 0.13
+            vb = nsteps * dt * k * xi / m * 6
+            pb = 2 * math.sqrt(3) * vb
+            print("exact rest: P' max %.3e m/s (bound %.3e m/s from |xi| <= %.2e m), max |v| %.3e m/s"
+                  % (pp.max(), pb, xi, vabs))
+            chk.check(pp.max() <= pb and vabs <= vb,
+                      "exact rest on the stopped grate: P' = 0 within round-off (%.3e <= %.3e m/s)" % (pp.max(), pb))
+        else:
+            pb = 1e-3 * g / omega * 2
+            end = T.read_dump(os.path.join(wd, "dump.end"))[-1][2]
+            x0 = np.array([GR_R + 2 * GR_R * i for _ in range(16) for i in range(24)])
+            dx = float(np.abs(end[:, 1] - x0).max())
+            xs = 2 * m * g / k
+            print("settled: P' at the end %.3e m/s (bound 1e-3 n g/omega = %.3e m/s), max |v| %.3e m/s, "
+                  "largest x displacement %.3e m (2 m g/k = %.3e m)" % (pp[-1], pb, vabs, dx, xs))
+            chk.check(pp[-1] <= pb, "settled bed on the stopped grate: P' %.3e <= %.3e m/s" % (pp[-1], pb))
+            chk.check(dx <= xs, "settled bed: no sphere drifts along the grate (%.3e <= %.3e m)" % (dx, xs))
+
+
+def case_grate_moving():
+    """As the LAMMPS case (3 flat rows all moving in group 0, sinusoidal stroke 0.02 m, 5 Hz,
+    forward_share 0.8, gravity; spheres leave past the last row through the box floor), but without
+    the inlet wall: the lattice starts at x >= stroke, which row 0 always covers. The bars' work is
+    taken from the particles' momentum balance: the only x-forces on the particles are those of the
+    bars (gravity along -z, pair forces cancel, y periodic), so W = sum u'_n (P_x,n+1 - P_x,n)
+    (steps where an atom leaves are skipped). Asserted: no NaN, atoms lost only through the outlet,
+    E(t) <= E(0) + W(t) + 1 % of sum |u' dP_x| + 1e-12 E(0), every speed <= sqrt(2 (E0 + W)/m), and the a-priori
+    bound |v| <= U + sqrt(2 g H)."""
+    stroke, T_, sf = 0.02, 0.2, 0.8
+    U = math.pi * stroke / (2 * min(sf, 1 - sf) * T_)
+    L, rows = 0.03, 3
+    # bars 5 mm high: LIGGGHTS meshes must stay inside the box, whose floor (z = -0.02) is the outlet
+    grate = ("rows %d bar_length %r bar_height 0.005 step_height 0.005 declination 0 width 0.04 row_group 0 0 0 "
+             "stroke %r period %r forward_share %r profile sinusoidal" % (rows, L, stroke, T_, sf))
+    dt = GR_TC / 40
+    nsteps = 60000
+    zlo = -0.02
+    text, n = grate_scene(grate, ["gr_moving0"], 12, 8, 2, (-0.01, 0.2, zlo, 0.05), x0=stroke, lift=1e-4, gravity=9.81)
+    text += "timestep %r\n" % dt
+    text += ("variable px equal vcm(all,x)*mass(all)\n"
+             "thermo_style custom step atoms v_px f_gr[3]\nthermo_modify lost ignore norm no format float %.17g\n"
+             "thermo 1\n")
+    text += "dump d all custom 100 dump.gm id mass radius x y z vx vy vz omegax omegay omegaz\n"
+    text += 'dump_modify d sort id format "%d' + " %.17g" * 11 + '"\n'
+    text += "run %d\n" % nsteps
+    wd = T.workdir(args, "stab_grate_moving")
+    out = T.run(args.tdem, text, wd, "moving", mpirun=args.mpirun).stdout
+    a = []
+    for header, rr in T.thermo_blocks(out):
+        a += [[float(x) for x in l.split()] for l in rr]
+    a = np.array(a)
+    chk.check(bool(np.all(np.isfinite(a))), "moving grate: thermo (atoms, momentum, stroke velocity) finite")
+    frames = {}
+    for st, cols, arr in T.read_dump(os.path.join(wd, "dump.gm")):
+        frames[st] = arr
+    steps = sorted(frames)
+    chk.check(all(np.all(np.isfinite(frames[s])) for s in steps), "moving grate: every dumped value finite")
+    if not args.keep:
+        os.remove(os.path.join(wd, "dump.gm"))   # ~30 MB; the input and log stay
+    same = a[1:, 1] == a[:-1, 1]
+    dP = np.where(same, a[1:, 2] - a[:-1, 2], 0.0)
+    udot = a[:-1, 3]
+    W = np.concatenate([[0.0], np.cumsum(udot * dP)])
+    Wabs = np.concatenate([[0.0], np.cumsum(np.abs(udot * dP))])
+    wmap = dict(zip(a[:, 0].astype(int), zip(W, Wabs)))
+
+    def energy(fr):
+        m, r = fr[:, 1], fr[:, 2]
+        return (0.5 * m * (fr[:, 6:9] ** 2).sum(axis=1) + 0.2 * m * r * r * (fr[:, 9:12] ** 2).sum(axis=1)
+                + m * 9.81 * (fr[:, 5] - zlo))
+
+    E0 = float(energy(frames[steps[0]]).sum())
+    H = float(frames[steps[0]][:, 5].max() - zlo)
+    vapriori = U + math.sqrt(2 * 9.81 * H)
+    worst_e, worst_v, vmax, nlost, lost_ok = -1e300, 0.0, 0.0, 0, True
+    prev = frames[steps[0]]
+    x_last_heel = (rows - 1) * L
+    for s in steps:
+        fr = frames[s]
+        Wt, Wa = wmap[s]
+        if s != steps[0]:
+            worst_e = max(worst_e, float(energy(fr).sum()) - (E0 + Wt + 0.01 * Wa) - 1e-12 * E0)  # + round-off of the sums
+        v = np.sqrt((fr[:, 6:9] ** 2).sum(axis=1))
+        vmax = max(vmax, float(v.max()))
+        worst_v = max(worst_v, float((v / np.sqrt(2 * (E0 + Wt + 0.01 * Wa) / fr[:, 1])).max()))
+        for gid in np.setdiff1d(prev[:, 0], fr[:, 0]):
+            row = prev[prev[:, 0] == gid][0]
+            nlost += 1
+            if not (row[3] > x_last_heel and row[8] < 0):
+                lost_ok = False
+                print("atom %d lost at x %.4f z %.4f vz %.3f (not at the outlet)" % (gid, row[3], row[5], row[8]))
+        prev = fr
+    print("moving grate: U = %.4f m/s, %d of %d spheres left through the outlet, bars' work %.4e J (sum |.| %.4e J), "
+          "E(0) %.4e J; max speed %.4f m/s (a-priori U + sqrt(2 g H) = %.4f m/s); largest E - (E0 + W + 1 %% |W|) "
+          "%.3e J; worst speed / energy bound %.3f" % (U, nlost, n, W[-1], Wabs[-1], E0, vmax, vapriori, worst_e, worst_v))
+    chk.check(int(a[-1, 1]) == len(frames[steps[-1]]) and n - len(frames[steps[-1]]) == nlost,
+              "moving grate: atom count consistent (%d left)" % nlost)
+    chk.check(lost_ok, "moving grate: atoms are lost only through the outlet (%d, beyond x = %.3f, falling)"
+              % (nlost, x_last_heel))
+    chk.check(nlost > 0, "moving grate: the bars transport spheres to the outlet (%d left)" % nlost)
+    chk.check(worst_e <= 0, "moving grate: E(t) <= E(0) + work of the bars at every frame (worst %.3e J)" % worst_e)
+    chk.check(worst_v <= 1, "moving grate: every particle speed below sqrt(2 (E0 + W)/m) (worst ratio %.3f)" % worst_v)
+    chk.check(vmax <= vapriori, "moving grate: every speed below U + sqrt(2 g H) = %.3f m/s (max %.3f)" % (vapriori, vmax))
+
+
 CASES = {
     "dt_0p9_critical_linear_stable_0p5_no_energy_gain": case_dt_critical,
     "stiff_200gpa_hertz_impacts_0p001_and_100_mps_bounded": case_stiff,
@@ -548,8 +951,10 @@ CASES = {
     "power_law_repeated_loading_no_gain_no_attraction": lambda: case_hysteretic("power_law"),
     "extended_laws_v0_1e-4_and_v_max_e_in_0_1": case_extended,
     "rank_crossing_in_contact_np2_equals_np1": case_rank_crossing,
-    # TODO(clumps): "clump_8_contacts_no_energy_gain" once the clump host fixes land (issue 6)
-    # TODO(grate): "grate_bed_no_lost_atoms" once the grate host fixes land (issue 7)
+    "clump_8_simultaneous_contacts_no_energy_gain": case_clump_contacts,
+    "clump_pile_at_rest_no_creep": case_clump_pile,
+    "grate_stopped_bed_at_rest_pprime_zero": case_grate_stopped,
+    "grate_moving_bars_energy_bounded": case_grate_moving,
 }
 
 if __name__ == "__main__":
