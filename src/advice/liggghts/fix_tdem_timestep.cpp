@@ -26,6 +26,7 @@
 #include "neigh_list.h"
 #include "pair.h"
 #include "pair_gran.h"
+#include "tdem_liggghts_advice.h"
 #include "update.h"
 
 using namespace LAMMPS_NS;
@@ -77,6 +78,15 @@ ta::Advice smallest(const std::vector<Candidate>& cs, const ta::Input& in) {
 }
 
 const tdem::ContactEnd kEnds[2] = {tdem::ContactEnd::zero_overlap, tdem::ContactEnd::zero_force};
+
+const std::string kTdemLaws =
+    "tdem/lsd, tdem/hertz, tdem/walton_braun, tdem/thornton, tdem/power_law, tdem/continuous_potential, "
+    "tdem/extended_linear, tdem/extended_hertz";
+
+// laws whose table rows carry the Rayleigh time of the smaller particle
+bool hertz_type(const std::string& model) {
+  return model == "tdem/hertz" || model == "hertz" || model == "tdem/thornton" || model == "tdem/extended_hertz";
+}
 
 }  // namespace
 
@@ -142,6 +152,96 @@ double FixTdemTimestep::scalar_prop(const char* name, bool& found) {
   Fix* f = modify->find_fix_property(name, "property/global", "scalar", 0, 0, id, false);
   found = f != nullptr;
   return f ? static_cast<FixPropertyGlobal*>(f)->compute_scalar() : 0.0;
+}
+
+// The row of a tdem normal model from what the model published (tdem_liggghts_advice.h): the law
+// and setting in use and the coefficients of the pair exactly as the model forms them.
+bool FixTdemTimestep::published_row(const void* owner, int i, int j, bool wall, double distance, th::Row& r) {
+  namespace ad = tdem::liggghts::advice;
+  const ad::Entry* entry = ad::find(owner);
+  if (!entry || !entry->coefficients) return false;
+  const ad::Entry e = *entry;  // a copy: the rows outlive no model, but keep them independent
+  ad::PairData pd;
+  pd.itype = i, pd.jtype = j, pd.wall = wall, pd.meff = r.meff, pd.reff = r.reff, pd.distance = distance;
+  const std::string name = e.settings.empty() ? e.name : e.name + " (" + e.settings + ")";
+  r.law = name;
+  r.supported = true;
+  const tdem::ContactEnd end = e.end;
+  auto coef = [e, pd](const ta::Input& in) {
+    ad::PairData d = pd;
+    d.meff = in.meff;
+    d.reff = in.reff;
+    return e.coefficients(d);
+  };
+  auto named = [name](ta::Advice a) {
+    a.law = name + ": " + a.law;
+    return a;
+  };
+  switch (e.law) {
+    case ad::Law::lsd:
+      r.advise = [coef, end, named](const ta::Input& in) { return named(ta::for_linear(coef(in).lsd, end, in)); };
+      break;
+    case ad::Law::hertz: {
+      const tdem::hertz::Damping dmp = e.damping;
+      r.advise = [coef, end, dmp, named](const ta::Input& in) {
+        return named(ta::for_hertz(dmp, end, coef(in).hertz, in));
+      };
+      const tdem::hertz::Params<double> p = coef(ta::Input{r.meff, r.reff}).hertz;
+      const double meff = r.meff, reff = r.reff;
+      r.stiffness = [p, dmp, end, meff, reff](double xi, double& k, double& c) {
+        const auto res = tdem::hertz::force(dmp, end, p, tdem::NormalKinematics<double>{xi, 0.0, meff, reff});
+        k = res.stiffness, c = res.damping;
+        return true;
+      };
+      break;
+    }
+    case ad::Law::walton_braun: {
+      r.advise = [coef, named](const ta::Input& in) { return named(ta::for_walton_braun(coef(in).walton_braun, in)); };
+      const tdem::walton_braun::Params<double> p = coef(ta::Input{r.meff, r.reff}).walton_braun;
+      r.stiffness = [p](double xi, double& k, double& c) {  // unloading from xi_max = xi
+        k = tdem::walton_braun::unloading_stiffness(p, xi), c = 0.0;
+        return true;
+      };
+      break;
+    }
+    case ad::Law::thornton: {
+      r.advise = [coef, named](const ta::Input& in) { return named(ta::for_thornton(coef(in).thornton, in)); };
+      const tdem::thornton::Params<double> p = coef(ta::Input{r.meff, r.reff}).thornton;
+      const double reff = r.reff;
+      r.stiffness = [p, reff](double xi, double& k, double& c) {  // the unloading tangent at xi_max = xi
+        k = 2.0 * p.e_star * std::sqrt(reff * xi), c = 0.0;
+        return true;
+      };
+      break;
+    }
+    case ad::Law::power_law:
+      r.advise = [coef, named](const ta::Input& in) { return named(ta::for_power_law(coef(in).power_law, in)); };
+      break;
+    case ad::Law::continuous_potential: {
+      r.advise = [coef, end, named](const ta::Input& in) {
+        return named(ta::for_continuous_potential(end, coef(in).potential, in));
+      };
+      const tdem::continuous_potential::Params<double> p = coef(ta::Input{r.meff, r.reff}).potential;
+      r.stiffness = [p](double xi, double& k, double& c) {  // dF/dX at X = d - xi
+        const double x = p.d - xi;
+        if (!(x > 0.0)) return false;
+        k = (p.n + 1.0) * p.n * p.eps * std::pow(p.d / x, p.n) / (x * x), c = p.gamma;
+        return true;
+      };
+      break;
+    }
+    case ad::Law::extended_linear:
+      r.advise = [coef, end, named](const ta::Input& in) {
+        return named(ta::for_extended_linear(end, coef(in).extended_linear, in));
+      };
+      break;
+    case ad::Law::extended_hertz:
+      r.advise = [coef, end, named](const ta::Input& in) {
+        return named(ta::for_extended_hertz(end, coef(in).extended_hertz, in));
+      };
+      break;
+  }
+  return true;
 }
 
 // The row of a normal law between a particle of type i and a partner of material type j
@@ -341,8 +441,9 @@ void FixTdemTimestep::build_rows(double v_setup) {
         r.itype = i, r.jtype = j;
         r.meff = mmin[i] * mmin[j] / (mmin[i] + mmin[j]);
         r.reff = rmin[i] * rmin[j] / (rmin[i] + rmin[j]);
-        law_row(model, i, j, r);
-        if (model == "tdem/hertz" || model == "hertz") {
+        if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(pg), i, j, false, rmin[i] + rmin[j], r))
+          law_row(model, i, j, r);
+        if (hertz_type(model)) {
           const ta::Material a = material(i, i, rmin[i], rhomin[i]), b = material(j, j, rmin[j], rhomin[j]);
           r.material = a;
           if (a.given() && b.given()) {
@@ -369,8 +470,10 @@ void FixTdemTimestep::build_rows(double v_setup) {
       r.itype = t, r.jtype = 0;
       r.meff = wm[t];
       r.reff = wr[t];
-      law_row(model, t, wt >= 1 && wt <= nt ? wt : t, r);
-      if (model == "tdem/hertz" || model == "hertz") r.material = material(t, t, wr[t], wrho[t]);
+      const int partner = wt >= 1 && wt <= nt ? wt : t;
+      if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(w), t, partner, true, wr[t], r))
+        law_row(model, t, partner, r);
+      if (hertz_type(model)) r.material = material(t, t, wr[t], wrho[t]);
       rows_.push_back(r);
     }
   }
@@ -378,7 +481,8 @@ void FixTdemTimestep::build_rows(double v_setup) {
   for (const th::Row& r : rows_)
     if (!r.supported)
       warnings.push_back("the law of " + r.what + " (" + r.law +
-                         ") is not supported (supported: tdem/lsd, tdem/hertz, hooke, hooke/stiffness, hertz); no advice");
+                         ") is not supported (supported: the tdem normal laws " + kTdemLaws +
+                         ", and hooke, hooke/stiffness, hertz); no advice");
   if (comm->me == 0)
     for (const std::string& w : warnings) error->warning(FLERR, (std::string("fix ") + id + " tdem/timestep: " + w).c_str());
 }

@@ -7,12 +7,13 @@
 // The law of pair gran / each fix wall/gran is found with contact_match("normal", NAME); its
 // parameters are read from the fix property/global the law reads (kn, gamman, gamman_abs,
 // youngsModulus, poissonsRatio, coefficientRestitution, contactTime, characteristicVelocity,
-// dampingCoefficient, dampingExponent). Supported: tdem/lsd, tdem/hertz, hooke, hooke/stiffness,
-// hertz; other laws: a warning naming the law. The model settings (tdem/lsd `parameters`,
-// `absolute_damping`, `limitForce`; tdem/hertz `damping`) live inside the contact model and are not
-// visible from outside: every setting the present properties allow is advised and the smallest
-// dt_c is used (the table says which). Rows, table, check and run-time check: as in LAMMPS
-// (src/advice/host_table.h). See docs/timestep.md.
+// dampingCoefficient, dampingExponent) for the stock laws hooke, hooke/stiffness and hertz. The
+// tdem normal laws (tdem/lsd, tdem/hertz, tdem/walton_braun, tdem/thornton, tdem/power_law,
+// tdem/continuous_potential, tdem/extended_linear, tdem/extended_hertz) publish their settings and
+// per-type-pair coefficients through src/pair_styles/liggghts/tdem_liggghts_advice.h, keyed by the
+// pair gran / fix wall/gran that owns them: the advice is that of the setting in use, from the
+// coefficients exactly as the model forms them. Other laws: a warning naming the law. Rows, table,
+// check and run-time check: as in LAMMPS (src/advice/host_table.h). See docs/timestep.md.
 #ifdef FIX_CLASS
 FixStyle(tdem/timestep, FixTdemTimestep)
 #else
@@ -53,6 +54,9 @@ class FixTdemTimestep : public Fix {
   void run_check(const char* when);
   void say(const std::string& s);
   void law_row(const std::string& model, int i, int j, tdem::advice::host::Row& r);
+  // the law of a tdem normal model, from the settings and coefficients it published
+  // (src/pair_styles/liggghts/tdem_liggghts_advice.h); false: the owner has no tdem model
+  bool published_row(const void* owner, int i, int j, bool wall, double distance, tdem::advice::host::Row& r);
   // fix property/global values (found = false: no such property)
   double pair_prop(const char* name, int i, int j, bool& found);
   double type_prop(const char* name, int i, bool& found);

@@ -20,6 +20,7 @@
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/continuous_potential.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -31,7 +32,9 @@ template <>
 class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
  public:
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {}
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {}
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
     tdem::liggghts::register_on_off(settings, "model tdem/continuous_potential", "limitForce", limit_force_, false);
@@ -62,6 +65,7 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
         pc.gamma = gamma[i][j];
         pc.kappa = kappa[i][j];
       }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.; }
@@ -82,7 +86,28 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The settings and coefficients for fix tdem/timestep (tdem_liggghts_advice.h): d = R_i + R_j
+  // (R_i for a wall) as in surfacesIntersect.
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::continuous_potential;
+    e.name = "tdem/continuous_potential";
+    e.settings = std::string("limitForce ") + ad::on_off(limit_force_);
+    e.end = end_;
+    const auto coef = coef_;
+    e.coefficients = [coef](const ad::PairData& d) {
+      const PairCoefficients& pc = coef(d.itype, d.jtype);
+      ad::Coefficients c;
+      c.potential = {pc.eps, d.distance, pc.n, d.distance, pc.gamma};
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     double eps, n, gamma, kappa;
   };

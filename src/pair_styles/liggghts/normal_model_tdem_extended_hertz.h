@@ -28,6 +28,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/extended.h"
 #include "tdem_liggghts_fits.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -39,13 +40,15 @@ template <>
 class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
  public:
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {
     history_offset_ = hsetup->add_history_value("ext_v0", "0");
     const int a = hsetup->add_history_value("ext_alpha", "0");
     if (a != history_offset_ + 1)
       error->all(FLERR, "model tdem/extended_hertz: history values v0, alpha are not adjacent");
     stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
     tdem::liggghts::register_enum(settings, "model tdem/extended_hertz", "restitutionFit", e_form_,
@@ -85,6 +88,7 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
           tdem::liggghts::fail_fit(lmp, caller, i, j, ex);
         }
       }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.5; }
@@ -119,7 +123,30 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The settings and coefficients for fix tdem/timestep (tdem_liggghts_advice.h): k~ formed with
+  // the pair's R* as in surfacesIntersect.
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::extended_hertz;
+    e.name = "tdem/extended_hertz";
+    e.settings = "restitutionFit " + tdem::liggghts::restitution_fit_words()[e_form_] + ", limitForce " +
+                 ad::on_off(limit_force_);
+    e.end = end_;
+    const auto coef = coef_;
+    e.coefficients = [coef](const ad::PairData& d) {
+      const PairCoefficients& pc = coef(d.itype, d.jtype);
+      ad::Coefficients c;
+      c.extended_hertz = pc.p;
+      c.extended_hertz.k = pc.k_per_sqrt_r * std::sqrt(d.reff);
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     tdem::extended::HertzParams p;  // p.k holds k~ / sqrt(R*)
     double k_per_sqrt_r, kappa;

@@ -27,6 +27,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/extended.h"
 #include "tdem_liggghts_fits.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -38,7 +39,7 @@ template <>
 class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
  public:
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {
     history_offset_ = hsetup->add_history_value("ext_v0", "0");
     const int k = hsetup->add_history_value("ext_k", "0");
     const int g = hsetup->add_history_value("ext_gamma", "0");
@@ -46,6 +47,8 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
       error->all(FLERR, "model tdem/extended_linear: history values v0, k, gamma are not adjacent");
     stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
     tdem::liggghts::register_enum(settings, "model tdem/extended_linear", "restitutionFit", e_form_,
@@ -85,6 +88,7 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
           tdem::liggghts::fail_fit(lmp, caller, i, j, ex);
         }
       }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.; }
@@ -114,7 +118,27 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The settings and coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::extended_linear;
+    e.name = "tdem/extended_linear";
+    e.settings = "restitutionFit " + tdem::liggghts::restitution_fit_words()[e_form_] + ", contactTimeFit " +
+                 tdem::liggghts::contact_time_fit_words()[tc_form_] + ", limitForce " + ad::on_off(limit_force_);
+    e.end = end_;
+    const auto coef = coef_;
+    e.coefficients = [coef](const ad::PairData& d) {
+      ad::Coefficients c;
+      c.extended_linear = coef(d.itype, d.jtype).p;
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     tdem::extended::LinearParams p;
     double kappa;

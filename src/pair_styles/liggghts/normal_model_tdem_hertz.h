@@ -27,6 +27,7 @@
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/hertz_damped.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -40,7 +41,9 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
   enum DampingWord { LINEAR = 0, KUWABARA_KONO = 1, TSUJI = 2, GENERAL = 3 };
 
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {}
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {}
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
     tdem::liggghts::register_enum(settings, "model tdem/hertz", "damping", damping_word_,
@@ -100,6 +103,7 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
           pc.damp = c[i][j];
         }
       }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.5; }
@@ -121,7 +125,28 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The settings and coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::hertz;
+    e.name = "tdem/hertz";
+    e.settings = std::string("damping ") + tdem::hertz::to_string(damping_) + ", limitForce " + ad::on_off(limit_force_);
+    e.end = end_;
+    e.damping = damping_;
+    const auto coef = coef_;
+    e.coefficients = [coef](const ad::PairData& d) {
+      const PairCoefficients& pc = coef(d.itype, d.jtype);
+      ad::Coefficients c;
+      c.hertz = {pc.k_per_sqrt_r * std::sqrt(d.reff), pc.damp, pc.theta};
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     double k_per_sqrt_r, damp, theta, kappa;
   };

@@ -36,6 +36,7 @@
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/linear_viscoelastic.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -49,7 +50,9 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
   enum Parameters { STIFFNESS = 0, RESTITUTION = 1, MATERIAL = 2 };
 
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {}
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {}
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
     tdem::liggghts::register_enum(settings, "model tdem/lsd", "parameters", parameters_, {"stiffness", "restitution", "material"},
@@ -170,6 +173,7 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
           c.gammat = 0.0;
         }
     }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.; }
@@ -221,7 +225,45 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The settings and coefficients for fix tdem/timestep (tdem_liggghts_advice.h): k and gamma of a
+  // contact formed exactly as in surfacesIntersect.
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    static const char* const words[] = {"stiffness", "restitution", "material"};
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::lsd;
+    e.name = "tdem/lsd";
+    e.settings = std::string("parameters ") + words[parameters_] + ", absolute_damping " +
+                 ad::on_off(absolute_damping_) + ", limitForce " + ad::on_off(limit_force_);
+    e.end = end_;
+    const auto coef = coef_;
+    const int mode = parameters_;
+    const bool kpm = stiffness_per_mass_, gpm = damping_per_mass_;
+    const double vchar = char_vel_, nktv2p = force->nktv2p;
+    const tdem::ContactEnd end = end_;
+    e.coefficients = [coef, mode, kpm, gpm, vchar, nktv2p, end](const ad::PairData& d) {
+      const PairCoefficients& pc = coef(d.itype, d.jtype);
+      double kn = pc.kn, gamman = pc.gamman;
+      if (mode == MATERIAL) {
+        const double k = tdem::lsd::stiffness_matching_hertz(pc.kn, d.reff, d.meff, vchar);
+        gamman = end == tdem::ContactEnd::zero_overlap
+                     ? tdem::lsd::damping_zero_overlap_from_log_restitution(pc.gamman, k, d.meff)
+                     : tdem::lsd::damping_from_ratio(pc.gamman, k, d.meff);
+        kn = k / nktv2p;
+      } else if (kpm) {
+        kn = d.meff * kn;
+      }
+      if (gpm) gamman = d.meff * gamman;
+      ad::Coefficients c;
+      c.lsd = {kn, gamman};
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     double kn, kt, gamman, gammat;  // per unit m* where the *_per_mass_ flags say so
   };

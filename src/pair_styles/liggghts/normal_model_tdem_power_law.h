@@ -25,6 +25,7 @@
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/power_law_hysteresis.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 
@@ -35,13 +36,15 @@ template <>
 class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
  public:
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {
     // The kernel's slots (tdem::power_law::history: xi_max, xi_f), adjacent, no sign flip.
     history_offset_ = hsetup->add_history_value(tdem::power_law::history[0].name, "0");
     for (int s = 1; s < tdem::power_law::history_size; ++s)
       hsetup->add_history_value(tdem::power_law::history[s].name, "0");
     stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings&) {}
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
@@ -78,6 +81,7 @@ class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
           error->all(FLERR, buf);
         }
       }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.; }
@@ -103,7 +107,25 @@ class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::power_law;
+    e.name = "tdem/power_law";
+    e.end = tdem::ContactEnd::zero_force;
+    const auto coef = coef_;
+    e.coefficients = [coef](const ad::PairData& d) {
+      ad::Coefficients c;
+      c.power_law = coef(d.itype, d.jtype).p;
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     tdem::power_law::Params<double> p;
     double kappa;

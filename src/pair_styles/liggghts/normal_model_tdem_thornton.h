@@ -21,6 +21,7 @@
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/thornton.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 
@@ -31,13 +32,15 @@ template <>
 class NormalModel<TDEM_THORNTON> : public NormalModelBase {
  public:
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {
     history_offset_ = hsetup->add_history_value("xi_max", "0");
     const int second = hsetup->add_history_value("f_max", "0");
     if (second != history_offset_ + 1)
       error->all(FLERR, "model tdem/thornton: history values xi_max, f_max are not adjacent");
     stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings&) {}
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
@@ -62,6 +65,7 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
         pc.p = {yeff[i][j] / force->nktv2p, py[i][j] / force->nktv2p};
         pc.kappa = kappa[i][j];
       }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.5; }
@@ -90,7 +94,25 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::thornton;
+    e.name = "tdem/thornton";
+    e.end = tdem::ContactEnd::zero_force;
+    const auto coef = coef_;
+    e.coefficients = [coef](const ad::PairData& d) {
+      ad::Coefficients c;
+      c.thornton = coef(d.itype, d.jtype).p;
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     tdem::thornton::Params<double> p;
     double kappa;

@@ -22,6 +22,7 @@
 
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/walton_braun.h"
+#include "tdem_liggghts_advice.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 
@@ -32,10 +33,12 @@ template <>
 class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
  public:
   NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c) {
+      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {
     history_offset_ = hsetup->add_history_value("xi_max", "0");
     stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
   }
+
+  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings&) {}
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
@@ -69,6 +72,7 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
         pc.p = {kl[i][j] / force->nktv2p, ku[i][j] / force->nktv2p, s[i][j]};
         pc.kt = kappa[i][j] * pc.p.k_load;
       }
+    publish_advice();
   }
 
   inline double stressStrainExponent() { return 1.; }
@@ -93,7 +97,25 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
   void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
   void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
 
+  // The coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
+  void publish_advice() {
+    namespace ad = tdem::liggghts::advice;
+    ad::Entry e;
+    e.model = this;
+    e.law = ad::Law::walton_braun;
+    e.name = "tdem/walton_braun";
+    e.end = tdem::ContactEnd::zero_force;
+    const auto coef = coef_;
+    e.coefficients = [coef](const ad::PairData& d) {
+      ad::Coefficients c;
+      c.walton_braun = coef(d.itype, d.jtype).p;
+      return c;
+    };
+    ad::publish(advice_owner_, std::move(e));
+  }
+
  private:
+  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {
     tdem::walton_braun::Params<double> p;
     double kt;

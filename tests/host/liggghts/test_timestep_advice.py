@@ -22,6 +22,18 @@
   runtime     tdem/hertz (e = 1), check stop, dt = 0.45 dt_c(vmax): the first run passes; velocities
               raised by 100 between runs: the run-time check (every 10) stops at step <= first + 10.
   bad_input   every keyword with a bad value; an unsupported law gives a warning naming it.
+  tdem_laws   the six laws advised from what their models publish (tdem_liggghts_advice.h):
+              tdem/walton_braun, tdem/thornton, tdem/power_law, tdem/continuous_potential,
+              tdem/extended_linear, tdem/extended_hertz, each between two equal spheres and on a
+              wall (m* = m, R* = R, contact distance R): the printed k_max and dt_c equal the closed
+              form of the stiffest tangent stiffness evaluated here (docs/timestep.md) to 1e-6.
+  lsd_settings tdem/lsd with every property set present (kn, gamman, coefficientRestitution,
+              contactTime): `parameters restitution` with `limitForce off` and `on` each give the
+              advice of that setting only (k, gamma from (e, t_c) in that convention, computed
+              here from the damped oscillator), `parameters stiffness` that of kn, m* gamman,
+              `absolute_damping on` that of kn, gamman_abs; tdem/hertz `damping linear` with
+              coefficientRestitution also present: the linear damper only. The table names the
+              setting and lists no candidates.
 """
 import math
 import os
@@ -420,9 +432,222 @@ def part_bad_input():
     w = [l for l in out.splitlines() if l.startswith("WARNING") and "hertz/stiffness" in l and "not supported" in l]
     checks.check(rc == 0 and w, "unsupported law hertz/stiffness: warning '%s'" % (w[0][:160] if w else out[-300:]))
 
+# ------------------------------------------------------------------ the six laws published by their models
+VMAX = 2.0
+
+
+def vv_dtc(k, c, meff):
+    return vv_critical(k, c, meff)[0]
+
+
+def pp(name, v, ntypes=1):
+    return "fix m_%s all property/global %s peratomtypepair %d %s\n" % (name, name, ntypes,
+                                                                       " ".join([repr(v)] * ntypes * ntypes))
+
+
+COMMON = pp("tangentialStiffnessRatio", 0.3) + pp("coefficientFriction", 0.5)
+
+
+def wall_of(model):
+    return "fix w all wall/gran model %s tangential tdem/cundall_strack primitive type 1 zplane -0.05" % model
+
+
+def law_case(name, model, settings, props, expect):
+    """expect(meff, reff, dist) -> k_max, damping c; rows pair_1_1 (two equal spheres) and the wall."""
+    inter = ("pair_style gran model %s tangential tdem/cundall_strack %s\npair_coeff * *\n%s %s"
+             % (model, settings, wall_of(model), settings))
+    rc, out = run(script(props + COMMON, inter, 1e-7, two_spheres(), "fix ts all tdem/timestep vmax %r" % VMAX,
+                         "run 0\n"), name)
+    rows = table_rows(out)
+    m = mass(R)
+    for row_name, meff, reff, dist in (("pair_1_1", MEFF, R / 2, 2 * R), ("wall_w_type_1", m, R, R)):
+        k, c = expect(meff, reff, dist)
+        dtc = vv_dtc(k, c, meff)
+        row = rows.get(row_name)
+        ok = (rc == 0 and row is not None and close(row["k_max"], k, 1e-6) and close(row["dt_critical"], dtc, 1e-6)
+              and close(row["m*"], meff, 1e-9) and model in row["law"] and "candidates" not in out)
+        checks.check(ok, "%s %s: k_max %s vs %.9g, dt_c %s vs %.9g (zeta here %.4g)"
+                     % (model, row_name, row and row["k_max"], k, row and row["dt_critical"], dtc,
+                        c / (2 * math.sqrt(k * meff))))
+        if not ok and rc != 0:
+            sys.stdout.write(out[-2000:])
+
+
+def part_tdem_laws():
+    v = VMAX
+    # Walton-Braun: k_ul = k_u + s F_max, F_max = k_l xi_max, xi_max = v sqrt(m*/k_l); no damping
+    kl, ku, s = 1.0e4, 5.0e4, 2000.0
+    law_case("walton_braun", "tdem/walton_braun", "",
+             pp("loadingStiffness", kl) + pp("unloadingStiffness", ku) + pp("unloadingStiffnessSlope", s),
+             lambda meff, reff, d: (ku + s * kl * v * math.sqrt(meff / kl), 0.0))
+
+    # Thornton: loading Hertz up to xi_y = R* (pi p_y / (2 E*))^2, then F = F_y + pi p_y R* (xi - xi_y),
+    # F_y = 2/3 pi p_y R* xi_y; xi_max from the energy 1/2 m* v^2; k_max = 2 E* sqrt(R* xi_max)
+    E, nu, py = 1.0e9, 0.3, 5.0e7
+    ystar = E / (2 * (1 - nu * nu))
+
+    def thornton(meff, reff, d):
+        xy = reff * (math.pi * py / (2 * ystar)) ** 2
+        fy = 2.0 / 3.0 * math.pi * py * reff * xy
+        wy = 0.4 * fy * xy
+        w = 0.5 * meff * v * v
+        if w <= wy:
+            xm = (15 * meff * v * v / (16 * ystar * math.sqrt(reff))) ** 0.4
+        else:
+            S = math.pi * py * reff
+            u = (-fy + math.sqrt(fy * fy + 2 * S * (w - wy))) / S
+            xm = xy + u
+        print("info: thornton m* %.4g: yield overlap %.4g, xi_max %.4g (plastic: %s)" % (meff, xy, xm, w > wy))
+        return 2 * ystar * math.sqrt(reff * xm), 0.0
+    law_case("thornton", "tdem/thornton", "",
+             "fix m_E all property/global youngsModulus peratomtype %r\n"
+             "fix m_nu all property/global poissonsRatio peratomtype %r\n" % (E, nu) + pp("yieldPressure", py),
+             thornton)
+
+    # power law: xi_max = ((p+1) m* v^2 / (2 a_l))^(1/(p+1)), F_max = a_l xi_max^p,
+    # unloading amplitude d = (F_max/a_ul)^(1/(p+q)); k = max(p F_max/xi_max, (p+q) F_max/d)
+    al, p, aul, q = 2e5, 1.5, 2e7, 0.5
+
+    def power(meff, reff, d):
+        xm = ((p + 1) * meff * v * v / (2 * al)) ** (1 / (p + 1))
+        fm = al * xm ** p
+        dd = (fm / aul) ** (1 / (p + q))
+        assert dd <= xm
+        return max(p * fm / xm, (p + q) * fm / dd), 0.0
+    law_case("power_law", "tdem/power_law", "",
+             pp("loadingCoefficient", al) + pp("loadingExponent", p) + pp("unloadingCoefficient", aul) +
+             pp("unloadingExponentIncrement", q), power)
+
+    # continuous potential from touch (X = d): 1/2 m* v^2 = eps ((d/X_min)^n - 1),
+    # k = (n+1) n eps d^n / X_min^(n+2), damping gamma
+    eps, n, gam = 1e-3, 24.0, 0.05
+
+    def potential(meff, reff, d):
+        xmin = d * (1 + meff * v * v / (2 * eps)) ** (-1 / n)
+        return (n + 1) * n * eps * d ** n / xmin ** (n + 2), gam
+    for lf in ("off", "on"):
+        law_case("continuous_potential", "tdem/continuous_potential", "limitForce %s" % lf,
+                 pp("potentialEnergy", eps) + pp("potentialExponent", n) + pp("dampingCoefficient", gam), potential)
+
+    # extended linear, e = c0 constant, t_c = c0 v^-c1 (falls with v0): the stiffest at v_max;
+    # zero overlap: zeta = -ln e / sqrt(pi^2 + ln^2 e), omega0 = pi / (t_c sqrt(1 - zeta^2))
+    e0, t0, t1 = 0.8, 5e-4, 0.2
+
+    def ext_lin(meff, reff, d):
+        le = math.log(e0)
+        z = -le / math.sqrt(math.pi ** 2 + le * le)
+        w0 = math.pi / (t0 * v ** (-t1) * math.sqrt(1 - z * z))
+        k = meff * w0 * w0
+        return k, 2 * z * math.sqrt(k * meff)
+    law_case("extended_linear", "tdem/extended_linear", "restitutionFit constant contactTimeFit power limitForce off",
+             pp("restitutionFitC0", e0) + pp("contactTimeFitC0", t0) + pp("contactTimeFitC1", t1), ext_lin)
+
+    # extended Hertz, e = c0 constant: Tsuji alpha = sqrt(5) zeta(e) (zero overlap); at the undamped
+    # xi_max = (5 m* v^2 / (4 k~))^(2/5): k = 3/2 k~ sqrt(xi_max), c = alpha sqrt(m* k~) xi_max^(1/4)
+    E2, nu2, e2 = 5e7, 0.4, 0.7
+    ystar2 = E2 / (2 * (1 - nu2 * nu2))
+
+    def ext_hertz(meff, reff, d):
+        kt = 4.0 / 3.0 * ystar2 * math.sqrt(reff)
+        xm = (5 * meff * v * v / (4 * kt)) ** 0.4
+        le = math.log(e2)
+        alpha = -math.sqrt(5) * le / math.sqrt(le * le + math.pi ** 2)
+        return 1.5 * kt * math.sqrt(xm), alpha * math.sqrt(meff * kt) * xm ** 0.25
+    law_case("extended_hertz", "tdem/extended_hertz", "restitutionFit constant limitForce off",
+             "fix m_E all property/global youngsModulus peratomtype %r\n"
+             "fix m_nu all property/global poissonsRatio peratomtype %r\n" % (E2, nu2) + pp("restitutionFitC0", e2),
+             ext_hertz)
+
+
+# ------------------------------------------------------------------ tdem/lsd settings
+def zero_force_e_tc(z, w0):
+    """Damped linear oscillator whose contact ends when the force k x + c x' returns to zero
+    (limitForce on): x = v/wd e^(-z w0 t) sin(wd t); x'' = 0 at wd t = pi - atan(2 z s / (1 - 2 z^2))
+    (z < 1/sqrt 2); e = |x'(t_c)| / v."""
+    s = math.sqrt(1 - z * z)
+    wd = w0 * s
+    ph = math.pi - math.atan2(2 * z * s, 1 - 2 * z * z)
+    tc = ph / wd
+    e = math.exp(-z * w0 * tc) * abs(wd * math.cos(ph) - z * w0 * math.sin(ph)) / wd
+    return e, tc
+
+
+def from_e_tc(e, tc, end, meff):
+    """k, gamma of the linear law giving restitution e and contact time tc for m* in convention end."""
+    if end == "zero_overlap":
+        le = math.log(e)
+        z = -le / math.sqrt(math.pi ** 2 + le * le)
+        w0 = math.pi / (tc * math.sqrt(1 - z * z))
+    else:
+        lo, hi = 0.0, 1.0 / math.sqrt(2) - 1e-12  # e falls with z
+        for _ in range(200):
+            mid = 0.5 * (lo + hi)
+            if zero_force_e_tc(mid, 1.0)[0] > e:
+                lo = mid
+            else:
+                hi = mid
+        z = 0.5 * (lo + hi)
+        w0 = zero_force_e_tc(z, 1.0)[1] / tc  # t_c scales as 1/w0
+    k = meff * w0 * w0
+    return k, 2 * z * math.sqrt(k * meff)
+
+
+def part_lsd_settings():
+    e, tc = 0.6, 2e-4
+    props = lsd_props() + pp("coefficientRestitution", e) + pp("contactTime", tc) + \
+        pp("tangentialStiffnessRatio", 0.3)
+    got = {}
+    for settings, end, expect in (
+            ("parameters restitution limitForce off", "zero_overlap", from_e_tc(e, tc, "zero_overlap", MEFF)),
+            ("parameters restitution limitForce on", "zero_force", from_e_tc(e, tc, "zero_force", MEFF)),
+            ("parameters stiffness limitForce on", "zero_force", (K, GN * MEFF))):
+        inter = "pair_style gran model tdem/lsd tangential tdem/cundall_strack %s\npair_coeff * *" % settings
+        rc, out = run(script(props, inter, 1e-7, two_spheres(), "fix ts all tdem/timestep vmax 1", "run 0\n"),
+                      "lsd_settings")
+        row = table_rows(out).get("pair_1_1")
+        k, c = expect
+        dtc = vv_dtc(k, c, MEFF)
+        words = settings.split()
+        named = row is not None and ("parameters_%s" % words[1]) in row["law"] and \
+            ("limitForce_%s" % words[3]) in row["law"] and ("(%s)" % end.replace("_", "_")) in row["law"]
+        ok = rc == 0 and named and close(row["k_max"], k, 1e-6) and close(row["dt_critical"], dtc, 1e-6) and \
+            "candidates" not in out and "smallest dt_c of" not in out
+        got[settings] = row and row["dt_critical"]
+        checks.check(ok, "tdem/lsd %s: law %s, k_max %s vs %.9g, dt_c %s vs %.9g"
+                     % (settings, row and row["law"], row and row["k_max"], k, row and row["dt_critical"], dtc))
+    # absolute_damping on: gamma = gamman_abs (not m* gamman)
+    ga = 0.9
+    props_abs = props + pp("gamman_abs", ga) + pp("gammat_abs", 0.0)
+    inter = ("pair_style gran model tdem/lsd tangential tdem/cundall_strack parameters stiffness absolute_damping on\n"
+             "pair_coeff * *")
+    rc, out = run(script(props_abs, inter, 1e-7, two_spheres(), "fix ts all tdem/timestep vmax 1", "run 0\n"),
+                  "lsd_settings")
+    row = table_rows(out).get("pair_1_1")
+    dtc = vv_dtc(K, ga, MEFF)
+    checks.check(rc == 0 and row is not None and "absolute_damping_on" in row["law"] and
+                 close(row["dt_critical"], dtc, 1e-6) and close(row["zeta"], ga / (2 * math.sqrt(K * MEFF)), 1e-6),
+                 "tdem/lsd absolute_damping on: dt_c %s vs %.9g (gamma = gamman_abs %g)" % (row and row["dt_critical"], dtc, ga))
+    # tdem/hertz damping linear with coefficientRestitution present too: only the linear damper counts
+    E, nu, c0 = 7e10, 0.3, 2.0
+    kmax, _, _, _ = hertz_closed(E / (2 * (1 - nu * nu)), MEFF, R / 2, 1.0)
+    dtc = vv_dtc(kmax, c0, MEFF)
+    inter = "pair_style gran model tdem/hertz tangential tdem/cundall_strack damping linear\npair_coeff * *"
+    rc, out = run(script(mat_props(1, E, nu, 0.5) + pp("dampingCoefficient", c0), inter, 1e-7, two_spheres(),
+                         "fix ts all tdem/timestep vmax 1", "run 0\n"), "hertz_settings")
+    row = table_rows(out).get("pair_1_1")
+    checks.check(rc == 0 and row is not None and "damping_linear" in row["law"] and "candidates" not in out and
+                 close(row["dt_critical"], dtc, 1e-6),
+                 "tdem/hertz damping linear (e also given): dt_c %s vs %.9g (k_max 3/2 k~ sqrt(xi_max), c = %g)"
+                 % (row and row["dt_critical"], dtc, c0))
+    a, b = got.get("parameters restitution limitForce off"), got.get("parameters restitution limitForce on")
+    checks.check(a and b and abs(a - b) > 1e-3 * a,
+                 "limitForce off / on advise different steps (%s vs %s): no longer the smaller of both" % (a, b))
+
+
 
 PARTS = {"acceptance": part_acceptance, "closed_forms": part_closed_forms, "check_modes": part_check_modes,
-         "runtime": part_runtime, "bad_input": part_bad_input}
+         "runtime": part_runtime, "bad_input": part_bad_input, "tdem_laws": part_tdem_laws,
+         "lsd_settings": part_lsd_settings}
 for name, f in PARTS.items():
     if args.part in ("all", name):
         f()
