@@ -200,11 +200,39 @@ write_data bed.data
 """
 
 
+def lig_molecular_data(src, dst):
+    """bed.data (atom_style granular: id type diameter density x y z ...) -> the same bed for
+    atom_style hybrid sphere molecular (id type x y z diameter density molecule ...), molecule = id"""
+    out, section = [], None
+    for line in open(src):
+        w = line.split()
+        if w and w[0] in ("Atoms", "Velocities"):
+            section = w[0]
+            out.append("Atoms # hybrid\n" if section == "Atoms" else line)
+            continue
+        if section == "Atoms" and len(w) >= 7:
+            out.append(" ".join([w[0], w[1], w[4], w[5], w[6], w[2], w[3], w[0]] + w[7:]) + "\n")
+            continue
+        out.append(line)
+    with open(dst, "w") as f:
+        f.writelines(out)
+
+
 def lig_variant(name, steps):
-    # LIGGGHTS fix tdem/clump was not committed when this benchmark was written: not measured yet
-    if name == "clumps":
-        return None
     model = LIG_MODELS[name]
+    if name == "clumps":
+        # every sphere a one-sphere body of fix tdem/clump (molecule = atom id); the radii and
+        # densities of the two sphere templates of lig_settle
+        lines = [LIG_HEAD.replace("atom_style granular", "atom_style hybrid sphere molecular"),
+                 "read_data bed_mol.data", "neighbor 0.0015 bin", "neigh_modify delay 0", LIG_PROPS,
+                 f"pair_style gran {model}", "pair_coeff * *", "timestep 0.00002",
+                 "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0", lig_walls(model),
+                 "group t1 type 1", "group t2 type 2",
+                 "fix c1 t1 tdem/clump template big shape single 0.0025 0 density 2500 bodies molecule",
+                 "fix c2 t2 tdem/clump template small shape single 0.0020 0 density 2000 bodies molecule",
+                 "thermo_style custom step atoms ke", "thermo_modify lost ignore norm no",
+                 f"thermo {steps}", f"run {steps}"]
+        return "\n".join(lines) + "\n"
     lines = [LIG_HEAD, "read_data bed.data", "neighbor 0.0015 bin", "neigh_modify delay 0", LIG_PROPS,
              f"pair_style gran {model}", "pair_coeff * *", "timestep 0.00002",
              "fix gravi all gravity 9.81 vector 0.0 0.0 -1.0"]
@@ -327,6 +355,8 @@ def main():
             t0 = time.time()
             run([exe, "-in", "in.settle", "-log", "log.settle", "-echo", "none", "-screen", "/dev/null"], wd,
                 os.path.join(wd, "out.settle"))
+            if engine == "liggghts":
+                lig_molecular_data(os.path.join(wd, "bed.data"), os.path.join(wd, "bed_mol.data"))
             print(f"[{engine}] settled bed: {natoms_of(os.path.join(wd, 'log.settle'))} spheres, "
                   f"{a.settle} steps, {time.time() - t0:.0f} s", flush=True)
             todo = []
@@ -340,9 +370,6 @@ def main():
                     if v == "normal_mu0":
                         continue
                     text = lig_variant(v, a.steps)
-                    if text is None:
-                        notes.append("LIGGGHTS: + clumps not measured (fix tdem/clump for LIGGGHTS not committed when the benchmark was written)")
-                        continue
                     todo.append((v, exe, text))
             if off:
                 exe_off = os.path.join(off, "bin", "tdem-" + engine)
@@ -378,7 +405,7 @@ variant, `fix nve/sphere` unless said otherwise.
 | normal_mu0 | `tangential cundall_strack 600 0 0` (mu = 0; the spring is evaluated and truncated to zero) | - |
 | tangential | `tangential cundall_strack 600 25 0.5` | `model tdem/lsd tangential tdem/cundall_strack` |
 | rolling | not available in pair tdem/gran | + `rolling_friction epsd2` (compiled for tdem/lsd + tdem/cundall_strack, `register_lsd_rolling.cpp`) |
-| clumps | tangential + every sphere a one-sphere body of `fix tdem/clump` (`shape single`, one fix per sphere size, `bodies molecule`, default `rotation splitting`) instead of `nve/sphere` | LIGGGHTS `fix tdem/clump` not committed yet |
+| clumps | tangential + every sphere a one-sphere body of `fix tdem/clump` (`shape single`, one fix per sphere size, `bodies molecule`, default `rotation splitting`) instead of `nve/sphere` | the same (`atom_style hybrid sphere molecular`, the bed converted with molecule = atom id) |
 | grate_standing / grate_moving | tangential, the floor replaced by `fix tdem/grate` (5 flat rows of 22 mm, rows 1 and 3 moving: stroke 0 / 4 mm at 5 Hz) | same grate as LIGGGHTS meshes + `fix wall/gran ... mesh` |
 | stock_normal | `pair gran/hooke 2000 0 50 0 0 1` (xmu = 0: no tangential force) | `model hooke/stiffness tangential off` |
 | stock_tangential | `pair gran/hooke/history 2000 600 50 25 0.5 1` | `model hooke/stiffness tangential history` |
