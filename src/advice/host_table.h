@@ -14,6 +14,7 @@
 // See docs/timestep.md, "fix tdem/timestep".
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -272,6 +273,40 @@ inline Now recheck(std::vector<Row>& rows, double v_pair, double v_wall, const s
   now.fraction = std::isfinite(now.dt_critical) && now.dt_critical > 0.0 ? dt / now.dt_critical : 0.0;
   if (now.dt_critical == 0.0) now.fraction = INFINITY;
   return now;
+}
+
+// ---------------------------------------------------------------- run-time scans (both engines)
+// The largest squared speed of the local atoms of the group (reduce with MPI_MAX, then sqrt).
+inline double local_largest_speed2(double* const* v, const int* mask, int nlocal, int groupbit) {
+  double v2 = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) v2 = std::max(v2, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+  return v2;
+}
+
+// The largest overlap per type pair (index a * (ntypes + 1) + b, a <= b) among the pairs of a
+// half or full neighbour list (LAMMPS/LIGGGHTS NeighList) whose atoms are both in the group; loc has
+// (ntypes + 1)^2 entries, reduce with MPI_MAX.
+template <class List>
+void local_largest_overlaps(const List* list, double* const* x, const double* rad, const int* type,
+                            const int* mask, int groupbit, int ntypes, int neighmask, std::vector<double>& loc) {
+  loc.assign(static_cast<std::size_t>((ntypes + 1) * (ntypes + 1)), 0.0);
+  if (!list || list->inum <= 0 || !list->ilist) return;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const int* jl = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jl[jj] & neighmask;
+      if (!(mask[j] & groupbit)) continue;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double ov = rad[i] + rad[j] - std::sqrt(dx * dx + dy * dy + dz * dz);
+      if (ov <= 0.0) continue;
+      const int a = std::min(type[i], type[j]), b = std::max(type[i], type[j]);
+      double& m = loc[static_cast<std::size_t>(a * (ntypes + 1) + b)];
+      m = std::max(m, ov);
+    }
+  }
 }
 
 }  // namespace host

@@ -375,38 +375,16 @@ void FixTdemTimestep::type_minima(int mask_bits, std::vector<double>& mmin, std:
 }
 
 double FixTdemTimestep::largest_speed() {
-  double v2 = 0.0;
-  double** v = atom->v;
-  for (int i = 0; i < atom->nlocal; i++)
-    if (atom->mask[i] & groupbit) v2 = std::max(v2, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+  const double v2 = tdem::advice::host::local_largest_speed2(atom->v, atom->mask, atom->nlocal, groupbit);
   double all = 0.0;
   MPI_Allreduce(&v2, &all, 1, MPI_DOUBLE, MPI_MAX, world);
   return std::sqrt(all);
 }
 
 void FixTdemTimestep::largest_overlaps(std::vector<double>& xi) {
-  const int nt = atom->ntypes;
-  std::vector<double> loc((nt + 1) * (nt + 1), 0.0);
-  NeighList* list = force->pair ? force->pair->list : nullptr;
-  if (list && list->inum > 0 && list->ilist) {
-    double** x = atom->x;
-    const double* rad = atom->radius;
-    const int *type = atom->type, *mask = atom->mask;
-    for (int ii = 0; ii < list->inum; ii++) {
-      const int i = list->ilist[ii];
-      if (!(mask[i] & groupbit)) continue;
-      const int* jl = list->firstneigh[i];
-      for (int jj = 0; jj < list->numneigh[i]; jj++) {
-        const int j = jl[jj] & NEIGHMASK;
-        if (!(mask[j] & groupbit)) continue;
-        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
-        const double ov = rad[i] + rad[j] - std::sqrt(dx * dx + dy * dy + dz * dz);
-        if (ov <= 0.0) continue;
-        const int a = std::min(type[i], type[j]), b = std::max(type[i], type[j]);
-        loc[a * (nt + 1) + b] = std::max(loc[a * (nt + 1) + b], ov);
-      }
-    }
-  }
+  std::vector<double> loc;
+  tdem::advice::host::local_largest_overlaps(force->pair ? force->pair->list : nullptr, atom->x, atom->radius,
+                                             atom->type, atom->mask, groupbit, atom->ntypes, NEIGHMASK, loc);
   xi.assign(loc.size(), 0.0);
   MPI_Allreduce(loc.data(), xi.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MAX, world);
 }
