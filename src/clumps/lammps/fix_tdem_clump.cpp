@@ -3,6 +3,8 @@
 
 #include "fix_tdem_clump.h"
 
+#include "clumps/host_bodies.h"
+
 #include "atom.h"
 #include "atom_vec.h"
 #include "comm.h"
@@ -120,13 +122,6 @@ struct ModifyRestartPeek : public Modify {
   }
 };
 
-bool spheres_disjoint(const std::vector<cl::Sphere> &s)
-{
-  for (std::size_t i = 0; i < s.size(); i++)
-    for (std::size_t j = i + 1; j < s.size(); j++)
-      if (cl::norm(cl::sub(s[i].x, s[j].x)) < s[i].r + s[j].r) return false;
-  return true;
-}
 }  // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -315,40 +310,13 @@ void FixTDEMClump::build_template(const std::string &kind, const std::string &pa
       tmpl = cl::make_template(shape, cl::builtin_shape(shape, r, d, n), rho, resolution, method);
     }
     // the union of disjoint spheres is the sum of the spheres: exact mass properties
-    if (tmpl.mp.volume > 0.0 && spheres_disjoint(tmpl.spheres)) {
-      const double dens = tmpl.mp.mass / tmpl.mp.volume;  // = the density used
-      double M = 0.0;
-      Vec3 c{0, 0, 0};
-      std::vector<double> m;
-      for (const auto &s : tmpl.spheres) {
-        m.push_back(4.0 * M_PI / 3.0 * s.r * s.r * s.r * tmpl.density);
-        M += m.back();
-        c = cl::add(c, cl::scale(m.back(), s.x));
-      }
-      (void) dens;
-      c = cl::scale(1.0 / M, c);
-      Mat3 I{};
-      for (std::size_t k = 0; k < tmpl.spheres.size(); k++) {
-        const auto &s = tmpl.spheres[k];
-        const Mat3 P = cl::point_inertia(m[k], cl::sub(s.x, c));
-        for (int a = 0; a < 3; a++)
-          for (int b = 0; b < 3; b++) I[a][b] += P[a][b] + (a == b ? 0.4 * m[k] * s.r * s.r : 0.0);
-      }
-      const double dn = tmpl.density;
-      const std::string nm = tmpl.name;
-      tmpl = cl::make_template_explicit(nm, tmpl.spheres, M, c, I);
-      tmpl.density = dn;
-      tmpl.mp.volume = M / dn;
-    }
+    cl::exact_if_disjoint(tmpl);
   } catch (const std::exception &e) {
     error->all(FLERR, where + ": template: " + std::string(e.what()));
   }
   bprop = cl::Body::from(tmpl);
   nsph = (int) tmpl.body.size();
-  double vsum = 0.0;
-  for (const auto &s : tmpl.body) vsum += s.r * s.r * s.r;
-  sphere_mass.clear();
-  for (const auto &s : tmpl.body) sphere_mass.push_back(tmpl.mp.mass * (s.r * s.r * s.r / vsum));  // exactly M for one sphere
+  sphere_mass = cl::sphere_masses(tmpl);  // the body mass shared by r^3; exactly M for one sphere
   if (comm->me == 0)
     utils::logmesg(lmp, fmt::format("{}: template {} ({} spheres): mass {:.10g}, principal inertia {:.10g} {:.10g} "
                                     "{:.10g}, bounding radius {:.6g}, rotation {}\n",
