@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "clumps/contact_tally.h"
 #include "clumps/multi_contact.h"
 #include "clumps/rigid_body.h"
 #include "clumps/template.h"
@@ -712,4 +713,90 @@ TEST(ClumpMultiContact, TiltedSingleContactAgainstRigidBodyImpactTheory) {
   EXPECT_LT(rel(loc.e_point, e1), 2e-3);
   EXPECT_LT(rel(loc.tc, t1), 2e-3);
   EXPECT_LT(std::fabs(loc.e - (-1 + (1 + e1) * m_loc / M)), 2e-3);
+}
+
+// ContactTally (contact_tally.h): the per-step body-pair sums the host styles use.
+TEST(ClumpContactTally, CountAndOverlapShareFactors) {
+  ContactTally t(1e-3);
+  // body 0 against wall -7: three contacts of unequal overlap; body 1 against free sphere -5: one
+  const double xi[3] = {1e-6, 3e-6, 2.5e-6};
+  for (double v : xi) t.add(0, -7, v);
+  t.add(-5, 1, 4e-6);
+  ASSERT_EQ(t.contacts(), 4u);
+  ASSERT_EQ(t.pairs(), 2u);
+  double share = 0.0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(t.count_of(k), 3);
+    EXPECT_EQ(t.factor(Correction::count, k, xi[k]), 1.0 / 3.0);
+    share += t.factor(Correction::overlap_share, k, xi[k]);
+  }
+  EXPECT_NEAR(share, 1.0, 1e-15);
+  EXPECT_NEAR(t.overlap_sum_of(0), 6.5e-6, 1e-20);
+  // a single contact keeps its force exactly; the other corrections leave every contact alone
+  EXPECT_EQ(t.factor(Correction::count, 3, 4e-6), 1.0);
+  EXPECT_EQ(t.factor(Correction::overlap_share, 3, 4e-6), 1.0);
+  EXPECT_EQ(t.factor(Correction::none, 0, xi[0]), 1.0);
+  EXPECT_EQ(t.factor(Correction::local_mass, 0, xi[0]), 1.0);
+  // the pair key does not depend on the order of the sides
+  t.add(-7, 0, 0.5e-6);
+  EXPECT_EQ(t.count_of(4), 4);
+  EXPECT_EQ(t.count_of(0), 4);
+  t.clear();
+  EXPECT_EQ(t.contacts(), 0u);
+  EXPECT_EQ(t.pairs(), 0u);
+}
+
+TEST(ClumpContactTally, SumIsIndependentOfOrderAndOfTheSplitOverRanks) {
+  // 40 contacts of 5 body pairs with overlaps whose double sums depend on the order
+  std::vector<double> xi;
+  std::vector<std::int64_t> a;
+  for (int k = 0; k < 40; ++k) {
+    xi.push_back(1e-7 * (1.0 + 0.37 * k + 1e-9 * k * k) * (k % 3 == 0 ? 1e3 : 1.0));
+    a.push_back(k % 5);
+  }
+  ContactTally fwd(2e-3), bwd(2e-3);
+  for (int k = 0; k < 40; ++k) fwd.add(a[k], -1, xi[k]);
+  for (int k = 39; k >= 0; --k) bwd.add(a[k], -1, xi[k]);
+  for (int k = 0; k < 40; ++k) {
+    const std::size_t kb = 39 - k;
+    EXPECT_EQ(fwd.overlap_sum_of(k), bwd.overlap_sum_of(kb));  // bitwise
+    EXPECT_EQ(fwd.factor(Correction::overlap_share, k, xi[k]),
+              bwd.factor(Correction::overlap_share, kb, xi[k]));
+  }
+  // "two ranks": even contacts here, odd ones there; pack, merge the other block, compare
+  ContactTally r0(2e-3), r1(2e-3);
+  for (int k = 0; k < 40; ++k) (k % 2 ? r1 : r0).add(a[k], -1, xi[k]);
+  r0.add(99, 98, 1e-6);  // a pair only rank 0 has
+  std::vector<std::int64_t> b0, b1;
+  r0.pack(b0);
+  r1.pack(b1);
+  r0.merge_packed(b1.data(), b1.size() / ContactTally::pack_width);
+  r1.merge_packed(b0.data(), b0.size() / ContactTally::pack_width);
+  std::size_t k0 = 0, k1 = 0;
+  for (int k = 0; k < 40; ++k) {
+    const ContactTally& r = (k % 2) ? r1 : r0;
+    const std::size_t kr = (k % 2) ? k1++ : k0++;
+    EXPECT_EQ(r.count_of(kr), 8);
+    EXPECT_EQ(r.overlap_sum_of(kr), fwd.overlap_sum_of(k));
+    EXPECT_EQ(r.factor(Correction::overlap_share, kr, xi[k]), fwd.factor(Correction::overlap_share, k, xi[k]));
+  }
+  EXPECT_EQ(r0.count_of(k0), 1);  // the pair only rank 0 has keeps its own count
+  EXPECT_EQ(r1.pairs(), 5u);      // pairs of the other rank are not added
+}
+
+TEST(ClumpContactTally, OverlapShareForceIsContinuousWhenASecondContactCloses) {
+  // the linear force sum_i s_i k xi_i of a body pair before and just after a second contact
+  // closes (xi2 = 0 -> 1e-15 m): continuous with overlap_share, a jump of k xi1 / 2 with count
+  const double k = 1e5, xi1 = 2e-5;
+  auto force = [&](Correction c, double xi2) {
+    ContactTally t(1e-3);
+    t.add(3, -1, xi1);
+    if (xi2 > 0.0) t.add(3, -1, xi2);
+    double f = t.factor(c, 0, xi1) * k * xi1;
+    if (xi2 > 0.0) f += t.factor(c, 1, xi2) * k * xi2;
+    return f;
+  };
+  EXPECT_NEAR(force(Correction::overlap_share, 1e-15), force(Correction::overlap_share, 0.0), 1e-9 * k * xi1);
+  EXPECT_NEAR(force(Correction::count, 1e-15), 0.5 * k * xi1, 1e-9 * k * xi1);
+  EXPECT_NEAR(force(Correction::count, 0.0), k * xi1, 1e-12 * k * xi1);
 }
