@@ -8,7 +8,7 @@
 // the tally only compares them). On several ranks it packs its entries, gathers the other ranks'
 // entries and merges them (merge_packed), so every rank sees the global N_c and sum of overlaps
 // of every body pair it touches. In the force pass, factor(k, xi) gives the factor s of the k-th
-// added contact (same order).
+// added contact (same order), or pair_factor(find(a, b), xi) by the sides of the contact.
 //
 // The overlap sum is kept in fixed point (128-bit integer units of quantum = length_scale * 2^-80,
 // with length_scale >= the largest overlap, e.g. the largest sphere diameter; an overlap of
@@ -69,8 +69,19 @@ class ContactTally {
   double overlap_sum_of(std::size_t k) const { return static_cast<double>(entries_[slots_[k]].qsum) * quantum_; }
 
   // factor s of the k-th added contact, with overlap xi
-  double factor(Correction c, std::size_t k, double xi) const {
-    const Entry& e = entries_[slots_[k]];
+  double factor(Correction c, std::size_t k, double xi) const { return pair_factor(c, slots_[k], xi); }
+
+  // pair slot of the sides a, b (order irrelevant), or -1 when they have no contact in the tally
+  int find(std::int64_t a, std::int64_t b) const {
+    if (a > b) std::swap(a, b);
+    auto it = index_.find(Key{a, b});
+    return it == index_.end() ? -1 : it->second;
+  }
+
+  // factor s of a contact with overlap xi in the pair of slot (from add or find; -1: s = 1)
+  double pair_factor(Correction c, int slot, double xi) const {
+    if (slot < 0) return 1.0;
+    const Entry& e = entries_[slot];
     if (e.n <= 1) return 1.0;
     switch (c) {
       case Correction::count: return 1.0 / static_cast<double>(e.n);

@@ -800,3 +800,17 @@ TEST(ClumpContactTally, OverlapShareForceIsContinuousWhenASecondContactCloses) {
   EXPECT_NEAR(force(Correction::count, 1e-15), 0.5 * k * xi1, 1e-9 * k * xi1);
   EXPECT_NEAR(force(Correction::count, 0.0), k * xi1, 1e-12 * k * xi1);
 }
+
+TEST(ClumpContactTally, LookupByTheSidesGivesTheFactorOfTheContactOrder) {
+  ContactTally t(1e-3);
+  t.add(2, 5, 1e-6);
+  t.add(5, 2, 3e-6);
+  t.add(2, -9, 2e-6);
+  EXPECT_EQ(t.find(5, 2), t.find(2, 5));
+  EXPECT_EQ(t.find(7, 5), -1);
+  EXPECT_EQ(t.pair_factor(Correction::overlap_share, t.find(2, 5), 3e-6),
+            t.factor(Correction::overlap_share, 1, 3e-6));
+  EXPECT_EQ(t.pair_factor(Correction::count, t.find(2, 5), 1e-6), 0.5);
+  EXPECT_EQ(t.pair_factor(Correction::count, t.find(-9, 2), 2e-6), 1.0);
+  EXPECT_EQ(t.pair_factor(Correction::count, -1, 2e-6), 1.0);
+}
