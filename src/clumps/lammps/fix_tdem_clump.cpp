@@ -127,7 +127,8 @@ struct ModifyRestartPeek : public Modify {
 /* ---------------------------------------------------------------------- */
 
 FixTDEMClump::FixTDEMClump(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), scheme(cl::Rotation::splitting), nsph(0), bodies_molecule(0), restarted(0),
+    Fix(lmp, narg, arg), scheme(cl::Rotation::splitting), nsph(0), bodies_molecule(0),
+    correction((int) cl::Correction::none), restarted(0),
     formed(0), ninsert(0), insert_type(1), insert_seed(0), nmax_idx(0), bodyidx(nullptr), sphidx(nullptr),
     dtv(0.0), dtf(0.0)
 {
@@ -174,7 +175,8 @@ void FixTDEMClump::parse(int narg, char **arg)
   const std::string syntax =
       "fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO] "
       "[integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson] "
-      "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule]";
+      "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule] "
+      "[correction none|count|overlap|local_mass]";
   auto need = [&](int iarg, int n, const std::string &key, const std::string &what) {
     if (iarg + n >= narg) error->all(FLERR, where + ": keyword '" + key + "' needs " + what + "; syntax: " + syntax);
   };
@@ -279,10 +281,17 @@ void FixTDEMClump::parse(int narg, char **arg)
         error->all(FLERR, where + ": bodies '" + std::string(arg[iarg + 1]) + "' is unknown; allowed: molecule");
       bodies_molecule = 1;
       iarg += 2;
+    } else if (key == "correction") {
+      need(iarg, 1, key, "a value (none, count, overlap, local_mass)");
+      const std::string v = arg[iarg + 1];
+      if (v != "none" && v != "count" && v != "overlap" && v != "local_mass")
+        error->all(FLERR, where + ": correction '" + v + "' is unknown; allowed: none, count, overlap, local_mass");
+      correction = (int) cl::correction_from_string(v);
+      iarg += 2;
     } else {
       error->all(FLERR, where + ": unknown keyword '" + key +
                             "'; allowed: template, file, shape, density, integration, resolution, rotation, "
-                            "insert, bodies; syntax: " + syntax);
+                            "insert, bodies, correction; syntax: " + syntax);
     }
   }
   (void) have_rotation;
@@ -716,6 +725,21 @@ void FixTDEMClump::refresh_kinematics()
     rot[b] = cl::rotation_matrix(st[b].q);
     omg[b] = omega_of(rot[b], st[b].L, bprop);
   }
+  if (correction != (int) cl::Correction::local_mass) return;
+  // com and inverse inertia (space frame, R diag(1/I) R^T) for the local_mass correction
+  bcom.resize(3 * st.size());
+  binv.resize(9 * st.size());
+  for (std::size_t b = 0; b < st.size(); b++) {
+    const Mat3 &R = rot[b];
+    for (int i = 0; i < 3; i++) {
+      bcom[3 * b + i] = st[b].x[i];
+      for (int j = 0; j < 3; j++) {
+        double s = 0.0;
+        for (int k = 0; k < 3; k++) s += R[i][k] * R[j][k] / bprop.inertia[k];
+        binv[9 * b + 3 * i + j] = s;
+      }
+    }
+  }
 }
 
 void FixTDEMClump::setup_pre_neighbor()
@@ -728,6 +752,8 @@ void FixTDEMClump::setup_pre_neighbor()
     set_spheres(false);
   } else {
     map_atoms();
+    // the pair and wall styles of the setup force evaluation need com and inertia (local_mass)
+    if (correction == (int) cl::Correction::local_mass) refresh_kinematics();
   }
 }
 
@@ -875,14 +901,19 @@ double FixTDEMClump::compute_array(int i, int j)
 }
 
 // "body" / "tdem_clump_body": int per atom (owned and ghost), body index or -1;
-// "masstotal": double per body (as fix rigid, for the granular pair and wall styles)
+// "masstotal": double per body (as fix rigid, for the granular pair and wall styles);
+// "tdem_clump_correction": int (dim 0), the multiple-contact correction (tdem::clumps::Correction);
+// "tdem_clump_com", "tdem_clump_inv_inertia": double, 3 / 9 per body (local_mass only)
 void *FixTDEMClump::extract(const char *name, int &dim)
 {
   dim = 1;
   if (std::strcmp(name, "body") == 0 || std::strcmp(name, "tdem_clump_body") == 0) return (void *) bodyidx;
   if (std::strcmp(name, "masstotal") == 0) return (void *) masstotal.data();
   if (std::strcmp(name, "tdem_clump_sphere") == 0) return (void *) sphidx;
+  if (std::strcmp(name, "tdem_clump_com") == 0) return (void *) bcom.data();
+  if (std::strcmp(name, "tdem_clump_inv_inertia") == 0) return (void *) binv.data();
   dim = 0;
+  if (std::strcmp(name, "tdem_clump_correction") == 0) return (void *) &correction;
   return nullptr;
 }
 

@@ -5,6 +5,7 @@
 //   fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO]
 //       [integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson]
 //       [insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule]
+//       [correction none|count|overlap|local_mass]
 //
 // Design ("global bodies", as fix rigid): every rank keeps the state {x, v, q, L} of every body;
 // per half step each rank sums force and torque of the spheres it owns, MPI_Allreduce, every rank
@@ -12,6 +13,10 @@
 // The sphere -> (body, sphere of the template) map is a global tag map; per-atom body indices
 // (owned and ghost) are refreshed in pre_neighbor. rigid_flag = 1 with extract("body") and
 // extract("masstotal"), so the granular pair and wall styles use the body mass as m*.
+// The multiple-contact correction (clumps/multi_contact.h) is applied by pair tdem/gran and fix
+// tdem/wall/gran, which read it with extract("tdem_clump_correction") and, for local_mass, the
+// per-body com ("tdem_clump_com", 3 per body, unwrapped) and inverse inertia in the space frame
+// ("tdem_clump_inv_inertia", 9 per body, row-major), current after initial_integrate.
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -24,6 +29,7 @@ FixStyle(tdem/clump,FixTDEMClump);
 
 #include "fix.h"
 
+#include "clumps/multi_contact.h"
 #include "clumps/rigid_body.h"
 
 #include <string>
@@ -61,6 +67,7 @@ class FixTDEMClump : public Fix {
   int nsph;                          // spheres per body
   std::vector<double> sphere_mass;   // mass of each template sphere (volume share of M)
   int bodies_molecule;               // form bodies from the group's molecules at the first setup
+  int correction;                    // tdem::clumps::Correction, for the pair and wall styles
   int restarted;                     // bodies read from a restart file
   int formed;                        // bodies from molecules formed
   // insertion
@@ -77,6 +84,7 @@ class FixTDEMClump : public Fix {
   std::vector<double> sphere_f;       // 6 per sphere slot (body * nsph + sphere): force, torque about the com
   std::vector<tdem::clumps::Mat3> rot;  // rotation matrix per body (current q)
   std::vector<tdem::clumps::Vec3> omg;  // angular velocity per body
+  std::vector<double> bcom, binv;       // per body: com (3), inverse inertia, space frame (9)
   std::unordered_map<tagint, int> slot;  // tag -> body * nsph + sphere
   // per atom (owned + ghost): body index (-1: not a clump sphere) and sphere index
   int nmax_idx;

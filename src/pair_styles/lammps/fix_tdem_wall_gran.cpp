@@ -38,7 +38,8 @@ double wall_number(LAMMPS *lmp, const std::string &where, const std::string &key
 /* ---------------------------------------------------------------------- */
 
 FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), history_one(nullptr), fix_rigid(nullptr), mass_rigid(nullptr)
+    Fix(lmp, narg, arg), history_one(nullptr), fix_rigid(nullptr), mass_rigid(nullptr), fix_clump(nullptr),
+    corr_mode(0)
 {
   const std::string where = std::string("fix ") + id + " tdem/wall/gran";
   if (!atom->sphere_flag) error->all(FLERR, where + " requires atom_style sphere");
@@ -172,6 +173,16 @@ void FixTDEMWallGran::init()
       fix_rigid = modify->fix[i];
       break;
     }
+  // fix tdem/clump with a multiple-contact correction: the corrected path
+  fix_clump = tdem_lammps::find_clump_correction(lmp, std::string("fix ") + id + " tdem/wall/gran", corr_mode);
+  if (!fix_clump) corr_mode = 0;
+  if (corr_mode != 0) {
+    // fixed-point unit of the overlap sums: the largest sphere diameter
+    double rmax = 0.0, all = 0.0;
+    for (int i = 0; i < atom->nlocal; i++) rmax = MAX(rmax, atom->radius[i]);
+    MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+    tally.set_length_scale(all > 0.0 ? 2.0 * all : 1.0);
+  }
 }
 
 void FixTDEMWallGran::setup(int vflag)
@@ -190,6 +201,11 @@ struct WallRunner {
   FixTDEMWallGran *f;
   template <int M, int E, int S, int TL = 0> void run() { f->template eval<M, E, S, TL>(); }
 };
+// the corrected path: the law at run time, the tangential law at compile time
+struct WallRunnerCorrected {
+  FixTDEMWallGran *f;
+  template <int M, int E, int S, int TL = 0> void run() { f->template eval<-1, -1, -1, TL, 1>(); }
+};
 }  // namespace
 
 void FixTDEMWallGran::post_force(int /*vflag*/)
@@ -206,10 +222,14 @@ void FixTDEMWallGran::post_force(int /*vflag*/)
     for (int i = 0; i < atom->nlocal; i++)
       mass_rigid[i] = (body[i] >= 0) ? mass_body[body[i]] : 0.0;
   }
+  if (corr_mode != 0) {
+    tdem_lammps::dispatch(false, law.mode, law.end, law.slip, law.tlaw, WallRunnerCorrected{this});
+    return;
+  }
   tdem_lammps::dispatch(true, law.mode, law.end, law.slip, law.tlaw, WallRunner{this});
 }
 
-template <int M, int E, int S, int TL> __attribute__((flatten, noinline)) void FixTDEMWallGran::eval()
+template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline)) void FixTDEMWallGran::eval()
 {
   const bool history_update = !update->setupflag;
 
@@ -235,6 +255,41 @@ template <int M, int E, int S, int TL> __attribute__((flatten, noinline)) void F
   double *rmass = atom->rmass;
   int *mask = atom->mask;
   const int nlocal = atom->nlocal;
+
+  // C: the multiple-contact correction; count / overlap tally the body-wall contacts first (in
+  // the order of the force pass below)
+  [[maybe_unused]] tdem_lammps::ClumpView cv;
+  [[maybe_unused]] std::size_t kcorr = 0;
+  [[maybe_unused]] const tdem::clumps::Correction cmode = (tdem::clumps::Correction) corr_mode;
+  [[maybe_unused]] const bool share = cmode == tdem::clumps::Correction::count ||
+                                      cmode == tdem::clumps::Correction::overlap_share;
+  if constexpr (C != 0) {
+    cv.fetch(fix_clump, cmode == tdem::clumps::Correction::local_mass);
+    if (share) {
+      tally.clear();
+      for (int i = 0; i < nlocal; i++) {
+        if (!(mask[i] & groupbit) || cv.body[i] < 0) continue;
+        double d[3] = {0.0, 0.0, 0.0};
+        std::int64_t side = -1;
+        if (wallstyle == ZCYLINDER) {
+          const double delxy = sqrt(x[i][0] * x[i][0] + x[i][1] * x[i][1]);
+          const double delr = cylradius - delxy;
+          if (delr > radius[i]) continue;
+          d[0] = -delr / delxy * x[i][0];
+          d[1] = -delr / delxy * x[i][1];
+          side = -3;
+        } else {
+          const double del1 = x[i][wallstyle] - wlo, del2 = whi - x[i][wallstyle];
+          d[wallstyle] = (del1 < del2) ? del1 : -del2;
+          side = (del1 < del2) ? -1 : -2;
+        }
+        const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        if (rsq > radius[i] * radius[i]) continue;
+        tally.add((std::int64_t) cv.body[i], side, radius[i] - sqrt(rsq));
+      }
+      tdem_lammps::sync_tally(tally, tally_none, world, tally_buf);
+    }
+  }
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
@@ -283,6 +338,15 @@ template <int M, int E, int S, int TL> __attribute__((flatten, noinline)) void F
     if (fix_rigid && mass_rigid[i] > 0.0) meff = mass_rigid[i];
 
     const double r = sqrt(rsq);
+    if constexpr (C != 0) {
+      if (cv.body[i] >= 0 && cmode == tdem::clumps::Correction::local_mass) {
+        // locally reduced mass at the contact point (middle of the overlap); the wall adds 0
+        const double n[3] = {dx / r, dy / r, dz / r};
+        const double h = rad - 0.5 * (rad - r);
+        const double xc[3] = {x[i][0] - n[0] * h, x[i][1] - n[1] * h, x[i][2] - n[2] * h};
+        meff = 1.0 / cv.inverse_local_mass(domain, cv.body[i], xc, n);
+      }
+    }
     const double rinv = 1.0 / r;
     const double rsqinv = 1.0 / rsq;
     const double vr1 = v[i][0] - vwall[0];
@@ -296,6 +360,16 @@ template <int M, int E, int S, int TL> __attribute__((flatten, noinline)) void F
     tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
                                                vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
                                                ccel, fs, rad, 0.0, omg[i], nullptr);
+    if constexpr (C != 0) {
+      // count / overlap: the whole contact force times s (the history stays the law's own)
+      if (cv.body[i] >= 0 && share) {
+        const double sc = tally.factor(cmode, kcorr++, rad - r);
+        ccel *= sc;
+        fs[0] *= sc;
+        fs[1] *= sc;
+        fs[2] *= sc;
+      }
+    }
 
     f[i][0] += dx * ccel + fs[0];
     f[i][1] += dy * ccel + fs[1];

@@ -25,6 +25,8 @@ FixStyle(tdem/wall/gran,FixTDEMWallGran);
 #include "fix.h"
 #include "tdem_lammps_law.h"
 
+#include "clumps/lammps/clump_correction_host.h"
+
 namespace LAMMPS_NS {
 
 class FixTDEMWallGran : public Fix {
@@ -48,7 +50,8 @@ class FixTDEMWallGran : public Fix {
   int maxsize_restart() override;
   void reset_dt() override;
 
-  template <int M, int E, int S, int TL> void eval();
+  // C = 1: the multiple-contact correction of fix tdem/clump (C = 0: the plain loop)
+  template <int M, int E, int S, int TL, int C = 0> void eval();
 
   // read-only view for other tdem styles (fix tdem/timestep): the wall's law
   const tdem_lammps::LawCoeffs &wall_law() const { return law; }
@@ -68,6 +71,14 @@ class FixTDEMWallGran : public Fix {
   class Fix *fix_rigid;
   double *mass_rigid;
   int nmax;
+
+  // multiple-contact correction of fix tdem/clump: the fix, its mode (tdem::clumps::Correction),
+  // the per-step tally of the body-wall contacts (sides: body index, wall -1 lo, -2 hi, -3
+  // cylinder), scratch for the MPI merge
+  class Fix *fix_clump;
+  int corr_mode;
+  tdem::clumps::ContactTally tally, tally_none;
+  tdem_lammps::TallyBuffers tally_buf;
 };
 
 }  // namespace LAMMPS_NS

@@ -16,6 +16,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "fix_neigh_history.h"
@@ -61,6 +62,8 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   fix_rigid = nullptr;
   mass_rigid = nullptr;
   nmax = 0;
+  fix_clump = nullptr;
+  corr_mode = 0;
 
   // placeholder for the FixNeighHistory, so it keeps the input-script position in the fix list
   fix_history = nullptr;
@@ -122,6 +125,13 @@ struct PairRunner {
     p->template eval<M, E, S, TL>(eflag, vflag);
   }
 };
+// the corrected path (fix tdem/clump correction count|overlap|local_mass): the law at run time,
+// the tangential law at compile time
+struct PairRunnerCorrected {
+  PairTDEMGran *p;
+  int eflag, vflag;
+  template <int M, int E, int S, int TL = 0> void run() { p->template eval<-1, -1, -1, TL, 0, -1, 1>(eflag, vflag); }
+};
 }  // namespace
 
 void PairTDEMGran::compute(int eflag, int vflag)
@@ -144,6 +154,13 @@ void PairTDEMGran::compute(int eflag, int vflag)
     comm->forward_comm_pair(this);
   }
 
+  // the multiple-contact correction of fix tdem/clump: a separate instantiation
+  if (corr_mode != 0) {
+    tdem_lammps::dispatch(false, umode, uend, uslip, utlaw, PairRunnerCorrected{this, eflag, vflag});
+    if (vflag_fdotr) virial_fdotr_compute();
+    return;
+  }
+
   // compile-time paths when every type pair has the same law (and so the history size of
   // that law)
   tdem_lammps::dispatch(uniform && size_history == tdem_lammps::history_size(umode, utlaw), umode,
@@ -161,7 +178,7 @@ void PairTDEMGran::compute(int eflag, int vflag)
 // keeps the pointers of that short, frequent path in registers) -1.6 % / -0.2 %; ONE's law as
 // a local copy (its members become loop invariants: the force and touch stores cannot alias
 // them) -1.3 % / -1.1 %; hertz end, slip and damping at compile time 0 / -5.3 %.
-template <int M, int E, int S, int TL, int ONE, int D>
+template <int M, int E, int S, int TL, int ONE, int D, int C>
 __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*vflag*/)
 {
   const bool shearupdate = !update->setupflag;
@@ -191,6 +208,43 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   int **firstneigh = list->firstneigh;
   int **firsttouch = fix_history->firstflag;
   double **firstshear = fix_history->firstvalue;
+
+  // C: the multiple-contact correction. Sides of a contact: the body index of a clump sphere,
+  // -(tag + 1) of a free sphere. count / overlap: every touching contact with a clump on at least
+  // one side is tallied first (same loop order as the force pass below, k-th contact = k-th add)
+  [[maybe_unused]] tdem_lammps::ClumpView cv;
+  [[maybe_unused]] std::size_t kcorr = 0;
+  [[maybe_unused]] const tdem::clumps::Correction cmode = (tdem::clumps::Correction) corr_mode;
+  [[maybe_unused]] const bool share = cmode == tdem::clumps::Correction::count ||
+                                      cmode == tdem::clumps::Correction::overlap_share;
+  [[maybe_unused]] tagint *tag = atom->tag;
+  if constexpr (C != 0) {
+    cv.fetch(fix_clump, cmode == tdem::clumps::Correction::local_mass);
+    if (share) {
+      tally.clear();
+      tally_twice.clear();
+      for (int ii = 0; ii < inum; ii++) {
+        const int i = ilist[ii];
+        const int *jl = firstneigh[i];
+        for (int jj = 0; jj < numneigh[i]; jj++) {
+          const int j = jl[jj] & NEIGHMASK;
+          if (cv.body[i] < 0 && cv.body[j] < 0) continue;
+          const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+          const double rsq = dx * dx + dy * dy + dz * dz;
+          const double rs = radius[i] + radius[j];
+          if (rsq >= rs * rs) continue;
+          const double xi = rs - sqrt(rsq);
+          const std::int64_t a = cv.body[i] >= 0 ? (std::int64_t) cv.body[i] : -(std::int64_t) tag[i] - 1;
+          const std::int64_t b = cv.body[j] >= 0 ? (std::int64_t) cv.body[j] : -(std::int64_t) tag[j] - 1;
+          tally.add(a, b, xi);
+          // newton off: a pair with a ghost j is also in the list of the rank (or image) owning
+          // j; count it where tag[i] < tag[j]
+          if (!newton_pair && j >= nlocal && tag[i] > tag[j]) tally_twice.add(a, b, xi);
+        }
+      }
+      tdem_lammps::sync_tally(tally, tally_twice, world, tally_buf);
+    }
+  }
 
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
@@ -253,6 +307,31 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       double meff = mi * mj / (mi + mj);
       if (mask[i] & freeze_group_bit) meff = mj;
       if (mask[j] & freeze_group_bit) meff = mi;
+      [[maybe_unused]] const bool clump_contact = C != 0 && (cv.body[i] >= 0 || cv.body[j] >= 0);
+      if constexpr (C != 0) {
+        if (clump_contact && cmode == tdem::clumps::Correction::local_mass) {
+          // locally reduced mass: inverse masses of the two sides at the contact point (middle
+          // of the overlap on the line of centres); a free sphere 1/m, a frozen one 0
+          const double n[3] = {delx * rinv, dely * rinv, delz * rinv};
+          const double hi = radi - 0.5 * (radsum - r), hj = radj - 0.5 * (radsum - r);
+          double inv = 0.0;
+          if (!(mask[i] & freeze_group_bit)) {
+            if (cv.body[i] >= 0) {
+              const double xc[3] = {xtmp - n[0] * hi, ytmp - n[1] * hi, ztmp - n[2] * hi};
+              inv += cv.inverse_local_mass(domain, cv.body[i], xc, n);
+            } else
+              inv += 1.0 / rmass[i];
+          }
+          if (!(mask[j] & freeze_group_bit)) {
+            if (cv.body[j] >= 0) {
+              const double xc[3] = {x[j][0] + n[0] * hj, x[j][1] + n[1] * hj, x[j][2] + n[2] * hj};
+              inv += cv.inverse_local_mass(domain, cv.body[j], xc, n);
+            } else
+              inv += 1.0 / rmass[j];
+          }
+          meff = 1.0 / inv;
+        }
+      }
 
       touch[jj] = 1;
       double ccel, fs[3];
@@ -260,6 +339,17 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
                                                     delz, r, rinv, rsqinv, radsum - r, vr1, vr2,
                                                     vr3, wr1, wr2, wr3, dt, shearupdate, shear,
                                                     ccel, fs, radi, radj, omega[i], omega[j]);
+      if constexpr (C != 0) {
+        // count / overlap: the whole contact force (normal and tangential) times s; the stored
+        // tangential history is the law's own
+        if (clump_contact && share) {
+          const double sc = tally.factor(cmode, kcorr++, radsum - r);
+          ccel *= sc;
+          fs[0] *= sc;
+          fs[1] *= sc;
+          fs[2] *= sc;
+        }
+      }
 
       // forces and torques
       const double fx = delx * ccel + fs[0];
@@ -424,6 +514,9 @@ void PairTDEMGran::init_style()
       fix_rigid = modify->fix[i];
       break;
     }
+  // fix tdem/clump with a multiple-contact correction: the corrected path
+  fix_clump = tdem_lammps::find_clump_correction(lmp, "pair tdem/gran", corr_mode);
+  if (!fix_clump) corr_mode = 0;
 
   // largest radii per type, including particles fix pour / fix deposit will insert
   const int ipour = modify->find_fix_by_style("^pour");
@@ -447,6 +540,13 @@ void PairTDEMGran::init_style()
   }
   MPI_Allreduce(&onerad_dynamic[1], &maxrad_dynamic[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&onerad_frozen[1], &maxrad_frozen[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
+  if (corr_mode != 0) {
+    // fixed-point unit of the overlap sums: the largest overlap is below the largest diameter
+    double dmax = 0.0;
+    for (int i = 1; i <= atom->ntypes; i++) dmax = MAX(dmax, 2.0 * MAX(maxrad_dynamic[i], maxrad_frozen[i]));
+    tally.set_length_scale(dmax > 0.0 ? dmax : 1.0);
+    tally_twice.set_length_scale(dmax > 0.0 ? dmax : 1.0);
+  }
 
   const int ifix = modify->find_fix(id_history);
   if (ifix < 0) error->all(FLERR, "pair tdem/gran: could not find its fix " + id_history);

@@ -32,6 +32,8 @@ PairStyle(tdem/gran,PairTDEMGran);
 #include "pair.h"
 #include "tdem_lammps_law.h"
 
+#include "clumps/lammps/clump_correction_host.h"
+
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -58,8 +60,9 @@ class PairTDEMGran : public Pair {
 
   // evaluation body, instantiated per (mode, end, slip, tangential law) and ONE = 1 when every
   // type pair has the same coefficients (no per-type lookups); public for the dispatcher
-  // (normal hertz with ONE: also the damping member D fixed)
-  template <int M, int E, int S, int TL, int ONE = 0, int D = -1> void eval(int eflag, int vflag);
+  // (normal hertz with ONE: also the damping member D fixed); C = 1: the multiple-contact
+  // correction of fix tdem/clump (its own instantiations, run-time law; C = 0 is the plain loop)
+  template <int M, int E, int S, int TL, int ONE = 0, int D = -1, int C = 0> void eval(int eflag, int vflag);
 
   // read-only view for other tdem styles (fix tdem/timestep): the law of type pair (i, j),
   // 1 <= i, j <= number of types (valid where setflag[i][j] or after init_one), and the
@@ -88,6 +91,14 @@ class PairTDEMGran : public Pair {
   class Fix *fix_rigid;
   double *mass_rigid;
   int nmax;
+
+  // multiple-contact correction of fix tdem/clump (clumps/multi_contact.h): the fix, its mode
+  // (tdem::clumps::Correction; none = no corrected path), the per-step contact tally (count,
+  // overlap) with the contacts another rank counts too (newton off), scratch for the MPI merge
+  class Fix *fix_clump;
+  int corr_mode;
+  tdem::clumps::ContactTally tally, tally_twice;
+  tdem_lammps::TallyBuffers tally_buf;
 
   void allocate();
   tdem_lammps::LawCoeffs &coeffs(int i, int j) { return law[i * (atom_ntypes + 1) + j]; }

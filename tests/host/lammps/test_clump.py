@@ -17,6 +17,22 @@
                the region, sphere distances of the template, uniformly random orientations; -np 2
                creates the same spheres
   bad_input    errors name the keyword, the value and what is allowed
+
+Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|local_mass):
+  corr_flat        flat-face impacts, N = 2, 4, 8 spheres on a wall and a N = 4 body-body impact,
+                   with 'count' and with 'overlap': e and t_c of the single-contact closed form
+                   (<= 1e-3); without correction the N-contact closed form
+  corr_continuity  a tilted row of 4 spheres hits the wall, contacts close one after another:
+                   with 'overlap' the largest step-to-step change of the wall force is of the
+                   order of the smooth change (vs the single-sphere impact), with 'count' the
+                   jumps at closing contacts (of order F/N) are detected
+  corr_local_mass  a tilted frictionless dimer hits the wall (and, through the pair style, a frozen
+                   sphere) with one sphere: with 'local_mass' the normal velocity of the contact
+                   point after/before equals the law's e, with 'none' it does not (m_loc < M), as
+                   the closed form of m_loc predicts
+  corr_mpi         pour of tetra clumps with 'overlap', 'count' and 'local_mass': -np 2 equals -np 1;
+                   newton on equals newton off (pairs with a ghost partner counted once); restart
+                   with 'overlap' continues identically; correction none is bitwise the default
 """
 import math
 import os
@@ -541,6 +557,10 @@ def part_bad_input():
          "insert: placed only"),
         ("fix c all tdem/clump template s shape single 0.002 0 density 2500 bodies atoms", PM,
          "bodies 'atoms' is unknown; allowed: molecule"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 correction half", PM,
+         "correction 'half' is unknown; allowed: none, count, overlap, local_mass"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 correction", PM,
+         "keyword 'correction' needs a value (none, count, overlap, local_mass)"),
         ("fix c all tdem/clump template s shape single 0.002 0 density 2500\nfix n all nve/sphere", PM,
          "also integrates clump spheres"),
     ]
@@ -560,8 +580,312 @@ def part_bad_input():
               "missing intra-clump exclusion -> %s" % (warn[0][:140] if warn else "no warning (rc %d)" % rc))
 
 
+# ----------------------------------------------------------------------------- 8. correction
+def write_flat(wd, n, r, d, bodies):
+    """Template flat.txt (n coplanar spheres) and body.data: bodies = [(z of the com, vz), ...]."""
+    pts = flat_template(n, r, d)
+    with open(os.path.join(wd, "flat.txt"), "w") as f:
+        f.write("".join("sphere %.17g %.17g %.17g %.17g\n" % (p[0], p[1], p[2], r) for p in pts))
+    lines = ["flat clumps", "", "%d atoms" % (n * len(bodies)), "1 atom types", "", "-0.05 0.05 xlo xhi",
+             "-0.05 0.05 ylo yhi", "0 0.05 zlo zhi", "", "Atoms # sphere", ""]
+    vel, mol = [], []
+    k = 0
+    for b, (z, vz) in enumerate(bodies):
+        for p in pts:
+            k += 1
+            lines.append("%d 1 %.17g 2500 %.17g %.17g %.17g" % (k, 2 * r, p[0], p[1], p[2] + z))
+            vel.append("%d 0 0 %.17g 0 0 0" % (k, vz))
+            mol.append("%d %d" % (k, b + 1))
+    lines += ["", "Velocities", ""] + vel + ["", "Molecules", ""] + mol
+    with open(os.path.join(wd, "body.data"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+CORR_IMPACT = """
+units si
+atom_style sphere
+boundary f f f
+newton off
+comm_modify vel yes
+region box block -0.05 0.05 -0.05 0.05 0 0.05
+create_box 1 box
+fix pm all property/atom mol ghost yes
+read_data body.data add append fix pm NULL Molecules
+neigh_modify exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution {e} {tc} tangential cundall_strack 0.8 0
+fix c all tdem/clump template flat file flat.txt density 2500 {corr}
+{wall}
+timestep {dt}
+variable fz equal fcm(all,z)
+thermo_style custom step f_c[1][4] f_c[1][7] {more} v_fz
+thermo_modify format float %.17g
+thermo 1
+run {n}
+"""
+
+
+def crossing(t, xi, dt):
+    """Start and end time of the (first) positive stretch of xi, by linear interpolation."""
+    on = np.where(xi > 0)[0]
+    i0 = on[0]
+    gaps = np.where(np.diff(on) > 1)[0]
+    i1 = on[gaps[0]] if len(gaps) else on[-1]
+    ts = t[i0 - 1] + (0 - xi[i0 - 1]) / (xi[i0] - xi[i0 - 1]) * dt
+    te = t[i1] + (0 - xi[i1]) / (xi[i1 + 1] - xi[i1]) * dt
+    return ts, te, i0, i1
+
+
+def part_corr_flat():
+    wd = lc.workdir("clump_corr_flat")
+    e, tc, r, d, v0 = 0.8, 1e-4, 0.002, 0.0045, 1.0
+    dt = tc / 4000
+    z0 = r + 2e-6
+    wall = "fix w all tdem/wall/gran normal lsd restitution %g %g tangential cundall_strack 0.8 0 zplane 0 NULL" % (e, tc)
+    for corr in ("none", "count", "overlap"):
+        for n in (2, 4, 8):
+            write_flat(wd, n, r, d, [(z0, -v0)])
+            e_n, t_n = closed_form_n(e, tc, n)
+            e_ref, t_ref = (e_n, t_n) if corr == "none" else (e, tc)
+            nsteps = int((2e-6 + 1.3 * max(t_ref, tc)) / dt) + 200
+            _, out = lc.run(TDEM, CORR_IMPACT.format(e=0.5, tc=tc, corr="correction " + corr, wall=wall, dt=dt,
+                                                    more="", n=nsteps), wd, "in.w%s%d" % (corr, n))
+            rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+            t = rows[:, 0] * dt
+            ts, te, _, _ = crossing(t, r - rows[:, 1], dt)
+            e_m, t_m = rows[-1, 2] / v0, te - ts
+            ee, et = abs(e_m - e_ref) / e_ref, abs(t_m - t_ref) / t_ref
+            print("wall, correction %-7s N = %d: e %.6f t_c %.6e s; reference (%s) e %.6f t_c %.6e s: "
+                  "rel err %.2g %.2g" % (corr, n, e_m, t_m, "N contacts" if corr == "none" else "single contact",
+                                         e_ref, t_ref, ee, et))
+            chk.check(ee <= 1e-3 and et <= 1e-3, "wall N = %d, correction %s: e, t_c vs the %s closed form: rel err "
+                      "%.2g, %.2g (<= 1e-3)" % (n, corr, "N-contact" if corr == "none" else "single-contact", ee, et))
+    # body-body: two N = 4 clumps face to face (pair tdem/gran), m* = M/2
+    n = 4
+    for corr in ("none", "count", "overlap"):
+        za = 0.01
+        write_flat(wd, n, r, d, [(za, 0.5 * v0), (za + 2 * r + 2e-6, -0.5 * v0)])
+        e_n, t_n = closed_form_n(e, tc, n)
+        e_ref, t_ref = (e_n, t_n) if corr == "none" else (e, tc)
+        nsteps = int((1e-6 + 1.3 * max(t_ref, tc)) / dt) + 200
+        _, out = lc.run(TDEM, CORR_IMPACT.format(e=e, tc=tc, corr="correction " + corr, wall="", dt=dt,
+                                                more="f_c[2][4] f_c[2][7]", n=nsteps), wd, "in.b%s" % corr)
+        rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+        t = rows[:, 0] * dt
+        ts, te, _, _ = crossing(t, 2 * r - (rows[:, 3] - rows[:, 1]), dt)
+        e_m, t_m = (rows[-1, 4] - rows[-1, 2]) / v0, te - ts
+        ee, et = abs(e_m - e_ref) / e_ref, abs(t_m - t_ref) / t_ref
+        print("body-body, correction %-7s N = 4: e %.6f t_c %.6e s; reference e %.6f t_c %.6e s: rel err %.2g %.2g"
+              % (corr, e_m, t_m, e_ref, t_ref, ee, et))
+        chk.check(ee <= 1e-3 and et <= 1e-3, "body-body N = 4, correction %s: e, t_c vs the %s closed form: rel err "
+                  "%.2g, %.2g (<= 1e-3)" % (corr, "N-contact" if corr == "none" else "single-contact", ee, et))
+
+
+def write_row(wd, n, r, d, zlow, theta, v0):
+    """A row of n spheres along x (template row.txt), tilted by theta about y so that the sphere at
+    -x is lowest (its centre at zlow), translating with vz = -v0."""
+    xs = [(k - 0.5 * (n - 1)) * d for k in range(n)]
+    with open(os.path.join(wd, "row.txt"), "w") as f:
+        f.write("".join("sphere %.17g 0 0 %.17g\n" % (x, r) for x in xs))
+    c, sn = math.cos(theta), math.sin(theta)
+    zc = zlow + xs[-1] * sn
+    lines = ["tilted row", "", "%d atoms" % n, "1 atom types", "", "-0.05 0.05 xlo xhi", "-0.05 0.05 ylo yhi",
+             "0 0.05 zlo zhi", "", "Atoms # sphere", ""]
+    for k, x in enumerate(xs):
+        lines.append("%d 1 %.17g 2500 %.17g 0 %.17g" % (k + 1, 2 * r, x * c, zc + x * sn))
+    lines += ["", "Velocities", ""] + ["%d 0 0 %.17g 0 0 0" % (k + 1, -v0) for k in range(n)]
+    lines += ["", "Molecules", ""] + ["%d 1" % (k + 1) for k in range(n)]
+    with open(os.path.join(wd, "body.data"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+ROW = CORR_IMPACT.replace("template flat file flat.txt", "template row file row.txt")
+
+
+def force_series(wd, name, corr, n, theta, e, tc, r, d, v0, dt, nsteps):
+    write_row(wd, n, r, d, r + 1e-6, theta, v0)
+    wall = ("fix w all tdem/wall/gran normal lsd restitution %g %g tangential cundall_strack 0.8 0 zplane 0 NULL"
+            % (e, tc))
+    _, out = lc.run(TDEM, ROW.format(e=e, tc=tc, corr="correction " + corr, wall=wall, dt=dt, more="", n=nsteps),
+                    wd, "in." + name)
+    rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+    return rows[:, -1]
+
+
+def jumps(F):
+    """Largest |F[k+1] - F[k]| over the contact, without the first touch (F from 0: the law's own
+    damping step gamma v0, the same with one sphere) and the last step (back to 0)."""
+    dF = np.abs(np.diff(F))
+    keep = (F[:-1] != 0.0) & (F[1:] != 0.0)
+    return np.max(dF[keep]), np.max(np.abs(F))
+
+
+def part_corr_continuity():
+    wd = lc.workdir("clump_corr_cont")
+    e, tc, r, d, v0 = 0.8, 1e-4, 0.002, 0.0045, 1.0
+    dt = tc / 1000
+    nsteps = 1500
+    theta = 0.002  # the spheres touch 9 um apart in height: they close during the first half
+    j1, f1 = jumps(force_series(wd, "one", "none", 1, 0.0, e, tc, r, d, v0, dt, nsteps))
+    smooth = j1 / f1
+    print("single sphere: max step change %.4g N of max force %.4g N (%.4f)" % (j1, f1, smooth))
+    res = {}
+    for corr in ("none", "count", "overlap"):
+        F = force_series(wd, corr, corr, 4, theta, e, tc, r, d, v0, dt, nsteps)
+        jm, fm = jumps(F)
+        res[corr] = jm / fm
+        print("row of 4, theta %.3g, correction %-7s: max step change %.4g N of max force %.4g N (%.4f, %.1f x the "
+              "single sphere)" % (theta, corr, jm, fm, jm / fm, jm / fm / smooth))
+    chk.check(res["overlap"] <= 3 * smooth, "overlap: the largest step change of the wall force is %.3g of its maximum, "
+              "<= 3 x that of one sphere (%.3g)" % (res["overlap"], smooth))
+    chk.check(res["count"] >= 0.1 and res["count"] >= 10 * smooth,
+              "count: a contact closing makes the force jump (%.3g of its maximum; F/N with N = 2..4 expected, "
+              ">= 0.1 and >= 10 x the single sphere %.3g)" % (res["count"], smooth))
+
+
+def lsd_e(e, tc, mass_ratio):
+    """Restitution of the LSD law derived from (e, tc) with mass M, acting on a mass m with
+    M/m = mass_ratio (zero-overlap end): beta -> beta sqrt(M/m)."""
+    a = -math.log(e) / math.pi
+    beta = a / math.sqrt(1 + a * a) * math.sqrt(mass_ratio)
+    return math.exp(-math.pi * beta / math.sqrt(1 - beta * beta))
+
+
+LOCAL = ROW.replace("create_box 1 box", "atom_modify map array\ncreate_box 1 box").replace(
+    "variable fz equal fcm(all,z)", "variable fz equal vz[1]")
+
+
+def part_corr_local_mass():
+    wd = lc.workdir("clump_corr_local")
+    e, tc, r, d, v0, rho = 0.8, 1e-4, 0.002, 0.0045, 0.1, 2500.0
+    dt = tc / 4000
+    theta = math.radians(30.0)
+    # independent m_loc: two disjoint spheres of mass m at +-d/2 on the body x axis; contact point
+    # below sphere 1, n = z: (r x n).I^-1 (r x n) = (d/2 cos theta)^2 / I_yy
+    m = 4.0 / 3.0 * math.pi * r ** 3 * rho
+    M = 2 * m
+    Iyy = 2 * (0.4 * m * r * r + m * (0.5 * d) ** 2)
+    m_loc = 1.0 / (1.0 / M + (0.5 * d * math.cos(theta)) ** 2 / Iyy)
+    e_none = lsd_e(e, tc, M / m_loc)
+    wall = "fix w all tdem/wall/gran normal lsd restitution %g %g tangential cundall_strack 0.8 0 zplane 0 NULL" % (e, tc)
+    res = {}
+    for corr in ("none", "local_mass"):
+        write_row(wd, 2, r, d, r + 1e-7, theta, v0)
+        nsteps = int(1.5 * tc / dt)
+        _, out = lc.run(TDEM, LOCAL.format(e=e, tc=tc, corr="correction " + corr, wall=wall, dt=dt, more="",
+                                           n=nsteps), wd, "in." + corr)
+        rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+        t = rows[:, 0] * dt
+        vz1 = rows[:, -1]
+        # overlap of sphere 1 from the body: z1 = z_com - d/2 sin(theta') ~ integrate vz1 instead
+        z1 = (r + 1e-7) + np.concatenate([[0.0], np.cumsum(0.5 * (vz1[1:] + vz1[:-1]) * dt)])
+        ts, te, i0, i1 = crossing(t, r - z1, dt)
+        v_after = vz1[i1] + (vz1[i1 + 1] - vz1[i1]) * (te - t[i1]) / dt
+        res[corr] = v_after / v0
+        res[corr + "_t"] = te - ts
+        print("tilted dimer (30 deg), correction %-10s: contact-point e %.6f, contact %.4e s (law e %.3f; closed form "
+              "with m_loc/M = %.4f and the body mass: %.6f)" % (corr, res[corr], te - ts, e, m_loc / M, e_none))
+    # the same through pair tdem/gran: the lower sphere lands on a frozen free sphere (radius 2r)
+    # right below it (a frozen side adds 0 to the inverse mass, as a wall)
+    for corr in ("none", "local_mass"):
+        write_row(wd, 2, r, d, 3 * r + 1e-7, theta, v0)
+        x1 = -0.5 * d * math.cos(theta)
+        with open(os.path.join(wd, "body.data")) as f:
+            text = f.read()
+        text = text.replace("2 atoms", "3 atoms").replace(
+            "\n\nVelocities\n\n", "\n3 1 %.17g 2500 %.17g 0 0\n\nVelocities\n\n" % (4 * r, x1)).replace(
+            "\n\nMolecules\n\n", "\n3 0 0 0 0 0 0\n\nMolecules\n\n") + "3 0\n"
+        with open(os.path.join(wd, "body.data"), "w") as f:
+            f.write(text)
+        inp = LOCAL.replace("fix c all", "group body molecule 1\ngroup ball id 3\nfix fr ball freeze\nfix c body")
+        nsteps = int(1.5 * tc / dt)
+        _, out = lc.run(TDEM, inp.format(e=e, tc=tc, corr="correction " + corr, wall="", dt=dt, more="", n=nsteps),
+                        wd, "in.pair_" + corr)
+        rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+        t = rows[:, 0] * dt
+        vz1 = rows[:, -1]
+        z1 = (3 * r + 1e-7) + np.concatenate([[0.0], np.cumsum(0.5 * (vz1[1:] + vz1[:-1]) * dt)])
+        ts, te, i0, i1 = crossing(t, 3 * r - z1, dt)
+        res["pair_" + corr] = (vz1[i1] + (vz1[i1 + 1] - vz1[i1]) * (te - t[i1]) / dt) / v0
+        res["pair_" + corr + "_t"] = te - ts
+        print("tilted dimer on a frozen sphere (pair), correction %-10s: contact-point e %.6f, contact %.4e s"
+              % (corr, res["pair_" + corr], te - ts))
+    ep = abs(res["pair_local_mass"] - e) / e
+    tp = abs(res["pair_local_mass_t"] - tc) / tc
+    chk.check(ep <= 2e-3 and tp <= 2e-3, "pair, local_mass: contact-point e %.6f = the law's e, contact time rel err "
+              "%.2g (rel err of e %.2g; <= 2e-3)" % (res["pair_local_mass"], tp, ep))
+    epn = abs(res["pair_none"] - e_none) / e_none
+    chk.check(epn <= 5e-3, "pair, none: contact-point e %.6f = the m_loc closed form %.6f (rel err %.2g <= 5e-3)"
+              % (res["pair_none"], e_none, epn))
+    el = abs(res["local_mass"] - e) / e
+    tl = abs(res["local_mass_t"] - tc) / tc
+    chk.check(el <= 2e-3 and tl <= 2e-3, "local_mass: contact-point e %.6f = the law's e %.2f, contact time %.6g s = "
+              "t_c %g s (rel err %.2g, %.2g <= 2e-3)" % (res["local_mass"], e, res["local_mass_t"], tc, el, tl))
+    en = abs(res["none"] - e_none) / e_none
+    chk.check(en <= 5e-3 and abs(res["none"] - e) / e > 0.02,
+              "none: contact-point e %.6f differs from the law's e (%.2f) as the m_loc closed form predicts (%.6f, "
+              "rel err %.2g <= 5e-3)" % (res["none"], e, e_none, en))
+
+
+def part_corr_mpi():
+    wd = lc.workdir("clump_corr_mpi")
+    steps = 6000
+    base = POUR + "run %d\n" % steps + DUMP
+    # correction none is today's behaviour, bitwise
+    lc.run(TDEM, base.format(out="d.default"), wd, "in.default")
+    lc.run(TDEM, base.replace("vel 0 0 -1", "vel 0 0 -1 correction none").format(out="d.none"), wd, "in.none")
+    _, a0 = lc.read_dump(os.path.join(wd, "d.default"))
+    _, b0 = lc.read_dump(os.path.join(wd, "d.none"))
+    chk.check(np.array_equal(a0, b0), "correction none equals no correction keyword (bitwise)")
+    for corr in ("overlap", "count", "local_mass"):
+        # split x or y over the ranks: bodies straddle the rank boundary, their contacts are tallied
+        # on both ranks
+        text = base.replace("vel 0 0 -1", "vel 0 0 -1 correction " + corr).replace(
+            "boundary p p f", "boundary p p f\nprocessors * * 1")
+        _, o1 = lc.run(TDEM, text.format(out="d.np1"), wd, "in.%s1" % corr)
+        lc.run(TDEM, text.format(out="d.np2"), wd, "in.%s2" % corr, np_=2, mpirun=MPIRUN)
+        _, a = lc.read_dump(os.path.join(wd, "d.np1"))
+        _, b = lc.read_dump(os.path.join(wd, "d.np2"))
+        contacts = max(float(r.split()[4]) for r in lc.thermo_blocks(o1)[1:])
+        per, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
+        _, vs_none = lc.rel_diff(a[:, 2:12], a0[:, 2:12])
+        print("correction %-10s: -np 2 vs -np 1 max rel diff %.3g (per column %s); vs no correction %.3g; "
+              "largest contact count %d" % (corr, worst, per, vs_none, contacts))
+        chk.check(a.shape == b.shape and worst <= 1e-12,
+                  "correction %s: -np 2 equals -np 1 after %d steps of pouring (%.3g <= 1e-12)" % (corr, steps, worst))
+        chk.check(vs_none > 1e-6, "correction %s changes the pour (%.3g vs no correction)" % (corr, vs_none))
+    # newton off counts a pair with a ghost partner once (the copy on the other rank or periodic
+    # image is removed from the tally): the same as newton on up to round-off (the order of the
+    # force sums differs; after ~5000 steps the pile amplifies it, with or without correction)
+    for corr in ("overlap", "count"):
+        text = (POUR + "run 3000\n" + DUMP).replace("vel 0 0 -1", "vel 0 0 -1 correction " + corr)
+        lc.run(TDEM, text.format(out="d.off"), wd, "in.off_" + corr)
+        lc.run(TDEM, text.replace("newton off", "newton on").format(out="d.on"), wd, "in.on_" + corr, np_=2,
+               mpirun=MPIRUN)
+        _, a = lc.read_dump(os.path.join(wd, "d.off"))
+        _, b = lc.read_dump(os.path.join(wd, "d.on"))
+        _, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
+        chk.check(worst <= 1e-8, "correction %s: newton on (-np 2) equals newton off (-np 1) after 3000 steps to "
+                  "round-off (%.3g <= 1e-8)" % (corr, worst))
+    # restart with a correction: run N + write/read_restart + run M equals run N + run M (2 ranks)
+    pour = POUR.replace("vel 0 0 -1", "vel 0 0 -1 correction overlap")
+    rest = POUR_RESTART.replace("vel 0 0 -1", "vel 0 0 -1 correction overlap")
+    lc.run(TDEM, pour + "run 6000\nrun 600\n" + DUMP.format(out="d.full"), wd, "in.full", np_=2, mpirun=MPIRUN)
+    lc.run(TDEM, pour + "run 6000\nwrite_restart pour.restart\n", wd, "in.first", np_=2, mpirun=MPIRUN)
+    lc.run(TDEM, rest.format(m=600, out="d.rest"), wd, "in.rest", np_=2, mpirun=MPIRUN)
+    _, a = lc.read_dump(os.path.join(wd, "d.full"))
+    _, b = lc.read_dump(os.path.join(wd, "d.rest"))
+    per, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
+    print("restart with correction overlap: max rel diff per column %s" % per)
+    chk.check(a.shape == b.shape and worst <= 1e-10,
+              "correction overlap: run 6000 + write/read_restart + run 600 equals run 6000 + run 600 (%.3g <= 1e-10)"
+              % worst)
+
+
 PARTS = {"nve_single": part_nve_single, "free_body": part_free_body, "flat_impact": part_flat_impact,
-         "mpi": part_mpi, "restart": part_restart, "insert": part_insert, "bad_input": part_bad_input}
+         "mpi": part_mpi, "restart": part_restart, "insert": part_insert, "bad_input": part_bad_input,
+         "corr_flat": part_corr_flat, "corr_continuity": part_corr_continuity,
+         "corr_local_mass": part_corr_local_mass, "corr_mpi": part_corr_mpi}
 if part == "all":
     for f in PARTS.values():
         f()

@@ -3,9 +3,11 @@
 if(NOT TDEM_LAMMPS_CLUMP)
   return()
 endif()
-foreach(_p nve_single free_body flat_impact mpi restart insert bad_input)
+foreach(_p nve_single free_body flat_impact mpi restart insert bad_input
+          corr_flat corr_continuity corr_local_mass corr_mpi)
   add_test(NAME lammps.clump.${_p}
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py ${_args} --part ${_p})
   set_tests_properties(lammps.clump.${_p} PROPERTIES LABELS lammps TIMEOUT 600)
 endforeach()
-set_tests_properties(lammps.clump.mpi lammps.clump.restart lammps.clump.insert PROPERTIES PROCESSORS 2)
+set_tests_properties(lammps.clump.mpi lammps.clump.restart lammps.clump.insert lammps.clump.corr_mpi
+                     PROPERTIES PROCESSORS 2)

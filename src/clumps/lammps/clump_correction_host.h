@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: the multiple-contact correction of fix tdem/clump as seen by the tdem pair and
+// wall styles (pair tdem/gran, fix tdem/wall/gran). Header-only, reached through Fix::extract, so
+// the pair and wall styles build (and run, without correction) when the clump module is off.
+//
+//   find_clump_correction   the clump fix and its correction (none when there is no clump fix)
+//   ClumpView               per-step pointers: body index per atom, body mass, com, inverse
+//                           inertia (space frame); inverse local mass of one side
+//   sync_tally              global contact counts / overlap sums of the ContactTally: removes
+//                           this rank's doubly seen contacts (newton off), then, on several ranks,
+//                           MPI_Allgatherv of the packed int64 entries and merge of the other
+//                           ranks' blocks (exact fixed-point sums: independent of the rank split)
+#pragma once
+
+#include "clumps/contact_tally.h"
+#include "clumps/multi_contact.h"
+
+#include "domain.h"
+#include "lammps.h"
+#include "error.h"
+#include "fix.h"
+#include "modify.h"
+
+#include <cstdint>
+#include <cstring>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace tdem_lammps {
+
+// The fix tdem/clump of the run and its correction (Correction::none: no clump fix, or no
+// correction). Errors when several clump fixes exist and one has a correction (their body
+// indices would collide).
+inline LAMMPS_NS::Fix *find_clump_correction(LAMMPS_NS::LAMMPS *lmp, const std::string &where, int &mode) {
+  mode = (int) tdem::clumps::Correction::none;
+  LAMMPS_NS::Fix *found = nullptr;
+  int nclump = 0;
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    LAMMPS_NS::Fix *f = lmp->modify->fix[i];
+    if (std::strcmp(f->style, "tdem/clump") != 0) continue;
+    nclump++;
+    int dim = 0;
+    const int *c = (const int *) f->extract("tdem_clump_correction", dim);
+    const int m = c ? *c : 0;
+    if (m != (int) tdem::clumps::Correction::none) {
+      if (found)
+        lmp->error->all(FLERR, where + ": several fix tdem/clump with a multiple-contact correction; allowed: "
+                                       "one fix tdem/clump when 'correction' is not none");
+      found = f;
+      mode = m;
+    }
+  }
+  if (found && nclump > 1)
+    lmp->error->all(FLERR, where + ": fix " + std::string(found->id) + " has correction " +
+                               tdem::clumps::to_string((tdem::clumps::Correction) mode) +
+                               ", which needs it to be the only fix tdem/clump (found " + std::to_string(nclump) + ")");
+  return found;
+}
+
+// Per-step view of the clump fix's body data.
+struct ClumpView {
+  const int *body = nullptr;       // per atom (owned and ghost): body index or -1
+  const double *mass = nullptr;    // per body
+  const double *com = nullptr;     // 3 per body (local_mass)
+  const double *inv_i = nullptr;   // 9 per body (local_mass)
+
+  void fetch(LAMMPS_NS::Fix *f, bool local_mass) {
+    int dim = 0;
+    body = (const int *) f->extract("tdem_clump_body", dim);
+    mass = (const double *) f->extract("masstotal", dim);
+    com = local_mass ? (const double *) f->extract("tdem_clump_com", dim) : nullptr;
+    inv_i = local_mass ? (const double *) f->extract("tdem_clump_inv_inertia", dim) : nullptr;
+  }
+
+  // 1/M + (r x n).I^-1 (r x n) of body b, r = contact point - com (minimum image), n unit normal
+  double inverse_local_mass(LAMMPS_NS::Domain *domain, int b, const double *xc, const double *n) const {
+    double r[3] = {xc[0] - com[3 * b], xc[1] - com[3 * b + 1], xc[2] - com[3 * b + 2]};
+    domain->minimum_image(r[0], r[1], r[2]);
+    const double c[3] = {r[1] * n[2] - r[2] * n[1], r[2] * n[0] - r[0] * n[2], r[0] * n[1] - r[1] * n[0]};
+    const double *I = inv_i + 9 * b;
+    double q = 0.0;
+    for (int i = 0; i < 3; i++) q += c[i] * (I[3 * i] * c[0] + I[3 * i + 1] * c[1] + I[3 * i + 2] * c[2]);
+    return 1.0 / mass[b] + q;
+  }
+};
+
+// Scratch buffers of sync_tally.
+struct TallyBuffers {
+  std::vector<std::int64_t> own, all;
+  std::vector<int> counts, displs;
+};
+
+// counted: every contact of this rank; twice_seen: those of them another rank counts too (newton
+// off, j a ghost); afterwards counted holds the global counts and overlap sums of its pairs.
+inline void sync_tally(tdem::clumps::ContactTally &counted, const tdem::clumps::ContactTally &twice_seen,
+                       MPI_Comm world, TallyBuffers &buf) {
+  constexpr int w = tdem::clumps::ContactTally::pack_width;
+  if (twice_seen.contacts() > 0) {
+    // subtract them exactly: entries with negated count and negated 128-bit overlap sum
+    twice_seen.pack(buf.own);
+    for (std::size_t k = 0; k < twice_seen.pairs(); k++) {
+      std::int64_t *p = buf.own.data() + k * w;
+      p[2] = -p[2];
+      __extension__ typedef __int128 Fixed;
+      Fixed v = (Fixed) (((unsigned __int128) (std::uint64_t) p[3] << 64) | (std::uint64_t) p[4]);
+      v = -v;
+      p[3] = (std::int64_t) (v >> 64);
+      p[4] = (std::int64_t) (std::uint64_t) v;
+    }
+    counted.merge_packed(buf.own.data(), twice_seen.pairs());
+  }
+  int nprocs = 1, me = 0;
+  MPI_Comm_size(world, &nprocs);
+  if (nprocs == 1) return;
+  MPI_Comm_rank(world, &me);
+  counted.pack(buf.own);
+  const int n = (int) buf.own.size();
+  buf.counts.resize(nprocs);
+  buf.displs.resize(nprocs);
+  MPI_Allgather(&n, 1, MPI_INT, buf.counts.data(), 1, MPI_INT, world);
+  int total = 0;
+  for (int r = 0; r < nprocs; r++) {
+    buf.displs[r] = total;
+    total += buf.counts[r];
+  }
+  buf.all.resize(total > 0 ? total : 1);
+  MPI_Allgatherv(buf.own.data(), n, MPI_INT64_T, buf.all.data(), buf.counts.data(), buf.displs.data(), MPI_INT64_T,
+                 world);
+  for (int r = 0; r < nprocs; r++)
+    if (r != me) counted.merge_packed(buf.all.data() + buf.displs[r], (std::size_t) (buf.counts[r] / w));
+}
+
+}  // namespace tdem_lammps
