@@ -17,15 +17,20 @@
 #include "comm.h"
 #include "domain.h"
 #include "error.h"
+#include "fix_wall_gran.h"
 #include "force.h"
 #include "group.h"
 #include "memory.h"
 #include "modify.h"
+#include "neigh_list.h"
 #include "neighbor.h"
+#include "pair_gran.h"
+#include "primitive_wall.h"
 #include "region.h"
 #include "update.h"
 
 #include "clumps/host_bodies.h"
+#include "tdem_liggghts_advice.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -36,6 +41,8 @@ using cl::Vec3;
 namespace {
 constexpr double kRestartMagic = 20261130.0;
 constexpr int kBodyDoubles = 20;  // mol, x3, v3, q4, L3, force3, torque3
+// side ids of the contact tally: body index >= 0, free sphere -(tag + 1), wall kWallSide + fix index
+constexpr std::int64_t kWallSide = std::int64_t(1) << 40;
 
 std::string num(double x) {
   char buf[64];
@@ -60,7 +67,8 @@ struct NeighborExclusionPeek : public Neighbor {
 const char* kSyntax =
     "fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO] "
     "[integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson] "
-    "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule]";
+    "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule] "
+    "[correction none|count|overlap|local_mass]";
 }  // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -79,7 +87,9 @@ FixTdemClump::FixTdemClump(LAMMPS* lmp, int narg, char** arg)
       insert_seed_(0),
       nmax_idx_(0),
       bodyidx_(nullptr),
-      sphidx_(nullptr) {
+      sphidx_(nullptr),
+      correction_(cl::Correction::none),
+      pair_gran_(nullptr) {
   where_ = std::string("fix ") + id + " tdem/clump";
   insert_vel_[0] = insert_vel_[1] = insert_vel_[2] = 0.0;
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
@@ -109,6 +119,7 @@ FixTdemClump::FixTdemClump(LAMMPS* lmp, int narg, char** arg)
 }
 
 FixTdemClump::~FixTdemClump() {
+  if (tdem::liggghts::clump_link::active == this) tdem::liggghts::clump_link::active = nullptr;
   memory->destroy(bodyidx_);
   memory->destroy(sphidx_);
 }
@@ -129,6 +140,7 @@ int FixTdemClump::setmask() {
   mask |= INITIAL_INTEGRATE;
   mask |= FINAL_INTEGRATE;
   mask |= PRE_NEIGHBOR;
+  if (correction_ != cl::Correction::none) mask |= PRE_FORCE;
   return mask;
 }
 
@@ -239,9 +251,19 @@ void FixTdemClump::parse(int narg, char** arg) {
         fail(where_ + ": keyword 'bodies': value '" + std::string(arg[iarg + 1]) + "' is unknown; allowed: molecule");
       bodies_molecule_ = true;
       iarg += 2;
+    } else if (key == "correction") {
+      need(iarg, 1, key, "a value (none, count, overlap, local_mass)");
+      try {
+        correction_ = cl::correction_from_string(arg[iarg + 1]);
+      } catch (const std::exception&) {
+        fail(where_ + ": keyword 'correction': value '" + std::string(arg[iarg + 1]) +
+             "' is unknown; allowed: none, count, overlap, local_mass");
+      }
+      iarg += 2;
     } else {
       fail(where_ + ": unknown keyword '" + key +
-           "'; allowed: template, file, shape, density, integration, resolution, rotation, insert, bodies; syntax: " +
+           "'; allowed: template, file, shape, density, integration, resolution, rotation, insert, bodies, "
+           "correction; syntax: " +
            kSyntax);
     }
   }
@@ -272,7 +294,7 @@ void FixTdemClump::parse(int narg, char** arg) {
   log(where_ + ": template " + name + " (" + std::to_string(nsph_) + " spheres): mass " + num(tmpl_.mp.mass) +
       ", principal inertia " + num(tmpl_.mp.principal[0]) + " " + num(tmpl_.mp.principal[1]) + " " +
       num(tmpl_.mp.principal[2]) + ", bounding radius " + num(tmpl_.bounding_radius) + ", rotation " +
-      cl::to_string(scheme_) + "\n");
+      cl::to_string(scheme_) + ", multiple-contact correction " + cl::to_string(correction_) + "\n");
 }
 
 /* ---------------------------------------------------------------------- bodies */
@@ -559,6 +581,13 @@ void FixTdemClump::refresh_kinematics() {
 
 // Molecules that appeared since the fix was created become bodies here.
 void FixTdemClump::init() {
+  if (correction_ != cl::Correction::none) {
+    auto*& act = tdem::liggghts::clump_link::active;
+    if (act && act != this)
+      fail(where_ + ": keyword 'correction': another fix tdem/clump already applies a multiple-contact correction "
+                    "(at most one fix may have a correction other than none)");
+    act = this;
+  }
   if (bodies_molecule_ && form_bodies() > 0) {
     formed_ = true;
     have_force_ = false;
@@ -710,6 +739,176 @@ void FixTdemClump::final_integrate() {
   }
   refresh_kinematics();
   set_spheres(false);
+}
+
+/* ---------------------------------------------------------------------- multiple-contact correction */
+
+// The granular pair and the wall/gran fixes whose contacts are tallied, and a warning for contact
+// models the correction does not reach (stock normal models).
+void FixTdemClump::setup_correction() {
+  namespace ad = tdem::liggghts::advice;
+  pair_gran_ = force->pair ? dynamic_cast<PairGran*>(force->pair) : nullptr;
+  if (force->pair && !pair_gran_)
+    fail(where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': pair style '" +
+         std::string(force->pair_style) + "' is not a granular pair style (pair_style gran model tdem/...)");
+  if (pair_gran_ && !ad::find(static_cast<LIGGGHTS::IContactHistorySetup*>(pair_gran_)) && comm->me == 0)
+    error->warning(FLERR, (where_ + ": keyword 'correction': the pair style has no tdem normal model; only "
+                                    "'model tdem/...' applies the multiple-contact correction")
+                              .c_str());
+  walls_.clear();
+  wall_sides_.clear();
+  for (int m = 0; m < modify->nfix; m++) {
+    Fix* f = modify->fix[m];
+    if (std::strncmp(f->style, "wall/gran", 9) != 0) continue;
+    FixWallGran* w = static_cast<FixWallGran*>(f);
+    const void* owner = static_cast<LIGGGHTS::IContactHistorySetup*>(w);
+    if (!ad::find(owner) && comm->me == 0)
+      error->warning(FLERR, (where_ + ": keyword 'correction': fix " + std::string(f->id) +
+                             " has no tdem normal model; only 'model tdem/...' applies the multiple-contact correction")
+                                .c_str());
+    if (w->is_mesh_wall()) {
+      if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share)
+        fail(where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': fix " +
+             std::string(f->id) + " is a mesh wall; count and overlap support primitive walls only (allowed with "
+                                  "meshes: none, local_mass)");
+      continue;
+    }
+    walls_.push_back(w);
+    wall_sides_.push_back({owner, kWallSide + m});
+  }
+  // overlaps are at most a sphere diameter (the tally's fixed point resolves 2^-80 of it)
+  double dmax = 0.0;
+  for (const auto& s : tmpl_.body) dmax = std::max(dmax, 2.0 * s.r);
+  for (int i = 0; i < atom->nlocal; i++) dmax = std::max(dmax, 2.0 * atom->radius[i]);
+  double all = dmax;
+  MPI_Allreduce(&dmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  tally_.set_length_scale(all > 0.0 ? all : 1.0);
+}
+
+void FixTdemClump::setup_pre_force(int) {
+  setup_correction();
+  pre_force(0);
+}
+
+void FixTdemClump::pre_force(int) {
+  if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share) build_tally();
+}
+
+// Every touching contact with a body of this fix on at least one side, per pair of sides, global
+// over the ranks (contact_tally.h). Same touching tests as the pair loop (rsq < radsum^2) and the
+// primitive wall loop (resolveContact <= 0).
+void FixTdemClump::build_tally() {
+  tally_.clear();
+  skipped_.clear();
+  const int nlocal = atom->nlocal;
+  double** x = atom->x;
+  const double* radius = atom->radius;
+  const int* tag = atom->tag;
+  auto side = [&](int a) -> std::int64_t {
+    return bodyidx_[a] >= 0 ? std::int64_t(bodyidx_[a]) : -(std::int64_t(tag[a]) + 1);
+  };
+  if (pair_gran_ && pair_gran_->list) {
+    NeighList* list = pair_gran_->list;
+    const bool newton = force->newton_pair != 0;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int* jlist = list->firstneigh[i];
+      const int jnum = list->numneigh[i];
+      for (int jj = 0; jj < jnum; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        if (bodyidx_[i] < 0 && bodyidx_[j] < 0) continue;
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+        const double rsq = dx * dx + dy * dy + dz * dz;
+        const double radsum = radius[i] + radius[j];
+        if (!(rsq < radsum * radsum)) continue;
+        const std::int64_t a = side(i), b = side(j);
+        if (a == b) continue;
+        // newton off: a pair with a ghost partner is in the lists of both owners' ranks (or twice
+        // on one rank across a periodic boundary): counted where tag[i] < tag[j]
+        if (newton || j < nlocal || tag[i] < tag[j]) tally_.add(a, b, radsum - std::sqrt(rsq));
+        else skipped_.push_back({std::min(a, b), std::max(a, b)});
+      }
+    }
+  }
+  const int* mask = atom->mask;
+  for (std::size_t w = 0; w < walls_.size(); w++) {
+    PrimitiveWall* pw = walls_[w]->primitiveWall();
+    if (!pw) continue;
+    const int bit = walls_[w]->groupbit;
+    for (int i = 0; i < nlocal; i++) {
+      if (bodyidx_[i] < 0 || !(mask[i] & bit)) continue;
+      double delta[3];
+      const double d = pw->resolveContact(x[i], radius[i], delta);
+      if (d <= 0.0) tally_.add(bodyidx_[i], wall_sides_[w].second, -d);
+    }
+  }
+  const int np = comm->nprocs;
+  if (np > 1) tally_.pack(packbuf_);
+  // pairs seen here only through contacts counted elsewhere: present with no count of their own
+  // (an entry with n = 1 from add, then n - 1 through a merged block)
+  compbuf_.clear();
+  for (const auto& p : skipped_) {
+    if (tally_.find(p.first, p.second) >= 0) continue;
+    tally_.add(p.first, p.second, 0.0);
+    const std::int64_t row[cl::ContactTally::pack_width] = {p.first, p.second, -1, 0, 0};
+    compbuf_.insert(compbuf_.end(), row, row + cl::ContactTally::pack_width);
+  }
+  if (!compbuf_.empty()) tally_.merge_packed(compbuf_.data(), compbuf_.size() / cl::ContactTally::pack_width);
+  if (np == 1) return;
+  int nme = static_cast<int>(packbuf_.size());
+  std::vector<int> counts(np), displs(np);
+  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int ntot = 0;
+  for (int p = 0; p < np; p++) {
+    displs[p] = ntot;
+    ntot += counts[p];
+  }
+  allbuf_.resize(std::max(ntot, 1));
+  MPI_Allgatherv(packbuf_.data(), nme, MPI_INT64_T, allbuf_.data(), counts.data(), displs.data(), MPI_INT64_T, world);
+  for (int p = 0; p < np; p++)
+    if (p != comm->me && counts[p] > 0)
+      tally_.merge_packed(allbuf_.data() + displs[p], counts[p] / cl::ContactTally::pack_width);
+}
+
+// 1/M + (r x n).I^-1 (r x n) of the body of atom a (r: sphere centre - com; the contact point lies
+// on the normal through the centre, so r x n is that of the contact point), 1/m of a free sphere.
+double FixTdemClump::inverse_side_mass(int a, const double* n) const {
+  const int b = bodyidx_[a];
+  if (b < 0) return 1.0 / atom->rmass[a];
+  const Vec3 r = cl::mul(rot_[b], tmpl_.body[sphidx_[a]].x);
+  const Vec3 rn = {r[1] * n[2] - r[2] * n[1], r[2] * n[0] - r[0] * n[2], r[0] * n[1] - r[1] * n[0]};
+  const Vec3 w = cl::mul_t(rot_[b], rn);  // body frame: the principal inertia is diagonal
+  return 1.0 / bprop_.mass + w[0] * w[0] / bprop_.inertia[0] + w[1] * w[1] / bprop_.inertia[1] +
+         w[2] * w[2] / bprop_.inertia[2];
+}
+
+double FixTdemClump::prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const {
+  const int i = sidata.i;
+  const int bi = bodyidx_[i];
+  std::int64_t a, b;
+  if (sidata.is_wall) {
+    if (bi < 0) return 1.0;
+    if (correction_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / inverse_side_mass(i, sidata.en);
+      return 1.0;
+    }
+    a = bi;
+    b = -1;
+    for (const auto& ws : wall_sides_)
+      if (ws.first == owner) b = ws.second;
+    if (b < 0) return 1.0;
+  } else {
+    const int j = sidata.j;
+    const int bj = bodyidx_[j];
+    if (bi < 0 && bj < 0) return 1.0;
+    if (correction_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / (inverse_side_mass(i, sidata.en) + inverse_side_mass(j, sidata.en));
+      return 1.0;
+    }
+    a = bi >= 0 ? std::int64_t(bi) : -(std::int64_t(atom->tag[i]) + 1);
+    b = bj >= 0 ? std::int64_t(bj) : -(std::int64_t(atom->tag[j]) + 1);
+  }
+  return tally_.pair_factor(correction_, tally_.find(a, b), sidata.deltan);
 }
 
 /* ---------------------------------------------------------------------- output */

@@ -6,6 +6,7 @@
 //   fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO]
 //       [integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson]
 //       [insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule]
+//       [correction none|count|overlap|local_mass]
 //
 // Needs per-atom molecule IDs (atom_style hybrid sphere molecular) and
 // `neigh_modify exclude molecule GROUP` (the spheres of one clump must not interact).
@@ -25,18 +26,23 @@
 // the contact styles do: bitwise with tdem's laws; see docs/clumps_liggghts.md).
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
 #include "fix.h"
 
+#include "clumps/contact_tally.h"
+#include "clumps/multi_contact.h"
 #include "clumps/rigid_body.h"
+#include "tdem_liggghts_clump_link.h"
 
 namespace LAMMPS_NS {
 
-class FixTdemClump : public Fix {
+class FixTdemClump : public Fix, public tdem::liggghts::clump_link::Correction {
  public:
   FixTdemClump(class LAMMPS*, int, char**);
   ~FixTdemClump();
@@ -48,6 +54,10 @@ class FixTdemClump : public Fix {
   void initial_integrate(int);
   void final_integrate();
   void pre_neighbor();
+  void setup_pre_force(int);
+  void pre_force(int);
+  // multiple-contact correction (tdem_liggghts_clump_link.h): called by the tdem normal models
+  double prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const override;
   void reset_dt();
   double compute_scalar();
   double compute_vector(int);
@@ -85,6 +95,18 @@ class FixTdemClump : public Fix {
   int nmax_idx_;
   int* bodyidx_;
   int* sphidx_;
+
+  // multiple-contact correction (docs/clumps_liggghts.md, "Multiple-contact correction")
+  tdem::clumps::Correction correction_;
+  tdem::clumps::ContactTally tally_;
+  class PairGran* pair_gran_;
+  std::vector<class FixWallGran*> walls_;                      // primitive wall/gran fixes
+  std::vector<std::pair<const void*, std::int64_t>> wall_sides_;  // contact-model owner -> side id
+  std::vector<std::pair<std::int64_t, std::int64_t>> skipped_;    // pairs counted on another rank
+  std::vector<std::int64_t> packbuf_, allbuf_, compbuf_;
+  void setup_correction();
+  void build_tally();
+  double inverse_side_mass(int a, const double* n) const;
 
   [[noreturn]] void fail(const std::string& msg);
   void log(const std::string& msg);

@@ -244,7 +244,7 @@ def part_flatface(args, checks):
 
 
 # ----------------------------------------------------------------------------- (4, 5) pour
-def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40):
+def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40, correction=None):
     """A box with 40 tetra clumps poured onto the floor. steps_b: a second run after write_restart."""
     lines = [HEAD]
     if read:
@@ -261,7 +261,7 @@ def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40):
               "timestep 5e-6",
               "region ins block 0.005 0.055 0.005 0.055 0.01 0.11 units box",
               "fix c all tdem/clump template t shape tetra 0.003 0.0045 density 2500 insert %d region ins seed 7 "
-              "vel 0 0 -0.5" % nclump,
+              "vel 0 0 -0.5%s" % (nclump, " correction " + correction if correction else ""),
               "fix gr all gravity 9.81 vector 0 0 -1"]
     for i, (dim, pos) in enumerate([("z", 0.0), ("x", 0.0), ("x", 0.06), ("y", 0.0), ("y", 0.06)]):
         lines.append("fix w%d all wall/gran model tdem/hertz tangential tdem/cundall_strack primitive type 1 %splane %g "
@@ -471,6 +471,8 @@ def part_bad(args, checks):
          ["molecule 1 has 2 spheres", "has 3"]),
         ("exclude", "fix c all tdem/clump template t shape dimer 0.002 0.01 density 1\nrun 1",
          ["neigh_modify exclude molecule"]),
+        ("correction", "fix c all tdem/clump template t shape dimer 0.002 0.01 density 1 correction many",
+         ["'correction'", "'many'", "none, count, overlap, local_mass"]),
         ("twice", "neigh_modify exclude molecule all\nfix c all tdem/clump template t shape dimer 0.002 0.01 density 1"
          "\nfix n all nve/sphere\nrun 1", ["fix n (nve/sphere) also integrates clump spheres"]),
     ]
@@ -553,10 +555,287 @@ def part_examples(args, checks):
                      "clumps_vs_multisphere.in -var stock %d: 50 tetra clumps (200 spheres) at step 1000" % stock)
 
 
+# ----------------------------------------------------------------------------- multiple-contact correction
+def lsd_rates(e1, t1):
+    """zero-overlap LSD: k/m and gamma/m of one contact for (e1, t1) (closed form, physics_reference 6.4)."""
+    lne = math.log(e1)
+    beta = -lne / math.sqrt(math.pi ** 2 + lne ** 2)
+    w0 = math.pi / (t1 * math.sqrt(1 - beta * beta))
+    return w0 * w0, 2 * beta * w0
+
+
+def lsd_outcome(k, gamma, m):
+    """e and t_c of one zero-overlap LSD contact of k, gamma on mass m."""
+    w0 = math.sqrt(k / m)
+    beta = gamma / (2.0 * math.sqrt(k * m))
+    return math.exp(-math.pi * beta / math.sqrt(1 - beta * beta)), math.pi / (w0 * math.sqrt(1 - beta * beta))
+
+
+def corr_scene(n, r, dist, rho, v0, k, gamma, dt, steps, correction, tilt=0.0, gap=2e-6, bodies=1,
+               restitution=None, dump=None):
+    """Rods of n spheres (n = 1: one sphere) dropped at v0 on a tdem/lsd zplane (bodies = 1), or a rod
+    dropped flat onto an equal resting rod (bodies = 2, no wall). Per-contact k, gamma (absolute), no
+    friction, no gravity; tilt: rotation of the rod about y (rad). restitution = (e1, t1): the law by
+    `parameters restitution` instead (k, gamma = m* times rates)."""
+    shape = "single %g 0" % r if n == 1 else ("dimer %g %g" % (r, dist) if n == 2 else "rod %g %g %d" % (r, dist, n))
+    lines = [HEAD, "region b block -0.1 0.1 -0.05 0.05 -0.05 0.05 units box", "create_box 1 b",
+             "neighbor 0.001 bin", "neigh_modify delay 0 exclude molecule all"]
+    zc = r + gap + 0.5 * (n - 1) * dist * math.sin(abs(tilt))
+    for i in range(n):
+        s = (i - 0.5 * (n - 1)) * dist
+        lines.append("create_atoms 1 single %.17g 0 %.17g units box" % (s * math.cos(tilt), zc + s * math.sin(tilt)))
+    if bodies == 2:
+        for i in range(n):
+            lines.append("create_atoms 1 single %.17g 0 %.17g units box" % ((i - 0.5 * (n - 1)) * dist, -r))
+    lines.append("set group all diameter %.17g density %.17g" % (2 * r, rho))
+    lines.append("set group all mol 1 vz %.17g" % -v0)
+    if bodies == 2:
+        lines.append("group lower id %d:%d" % (n + 1, 2 * n))
+        lines.append("set group lower mol 2 vz 0")
+    if restitution:
+        e1, t1 = restitution
+        law = "parameters restitution"
+        lines += ["fix m_e all property/global coefficientRestitution peratomtypepair 1 %.17g" % e1,
+                  "fix m_tc all property/global contactTime peratomtypepair 1 %.17g" % t1,
+                  "fix m_ka all property/global tangentialStiffnessRatio peratomtypepair 1 0.0"]
+    else:
+        law = "parameters stiffness absolute_damping on"
+        lines += ["fix m_kn all property/global kn peratomtypepair 1 %.17g" % k,
+                  "fix m_kt all property/global kt peratomtypepair 1 %.17g" % k,
+                  "fix m_gn all property/global gamman_abs peratomtypepair 1 %.17g" % gamma,
+                  "fix m_gt all property/global gammat_abs peratomtypepair 1 0.0"]
+    lines += ["fix m_mu all property/global coefficientFriction peratomtypepair 1 0.0",
+              "pair_style gran model tdem/lsd tangential no_history %s" % law,
+              "pair_coeff * *", "timestep %.17g" % dt,
+              "fix c all tdem/clump template rod shape %s density %.17g correction %s" % (shape, rho, correction)]
+    if bodies == 1:
+        lines.append("fix w all wall/gran model tdem/lsd tangential no_history primitive type 1 zplane 0.0 %s" % law)
+        lines.append("thermo_style custom step f_c[1][4] f_c[1][7] f_c[1][2] f_c[1][15] f_c[1][16] f_c[1][17]")
+    else:
+        lines.append("thermo_style custom step f_c[1][4] f_c[1][7] f_c[2][4] f_c[2][7]")
+    if dump:
+        lines += ["dump d all custom 1 %s id z vz fz" % dump, "dump_modify d format \"%d %.17g %.17g %.17g\""]
+    lines += ["thermo_modify format float %.17g", "thermo 1", "run %d" % steps]
+    return "\n".join(lines) + "\n"
+
+
+def thermo_rows(d, name):
+    return np.array([[float(x) for x in s.split()] for s in T.thermo_blocks(open(os.path.join(d, "log." + name)).read())[-1][1]])
+
+
+def crossing_times(t, xi):
+    ins = np.where(xi > 0)[0]
+    if len(ins) == 0:
+        return None
+    a, b = ins[0], ins[-1]
+    t_in = t[a - 1] + (t[a] - t[a - 1]) * (0 - xi[a - 1]) / (xi[a] - xi[a - 1])
+    t_out = t[b] + (t[b + 1] - t[b]) * (0 - xi[b]) / (xi[b + 1] - xi[b])
+    return t_in, t_out
+
+
+CORR_R, CORR_RHO, CORR_DIST, CORR_E, CORR_T, CORR_V = 0.005, 2500.0, 0.0125, 0.8, 1e-4, 1.0
+
+
+def part_corrflat(args, checks):
+    """count / overlap: flat rods of N = 1, 2, 4, 8 on a wall and a flat rod on a rod (N = 4) with per-contact
+    k, gamma derived for the single contact (body mass, resp. reduced mass of the two bodies) give the
+    single-contact e and t_c (closed form) to 1e-3; without correction the N-contact closed form (shown
+    by test flatface)."""
+    r, rho, dist, e1, t1, v0 = CORR_R, CORR_RHO, CORR_DIST, CORR_E, CORR_T, CORR_V
+    d = T.workdir(args, "tdem_lig_clump_corrflat")
+    kpm, gpm = lsd_rates(e1, t1)
+    cases = [(n, c, 1) for c in ("count", "overlap") for n in (1, 2, 4, 8)] + [(4, "count", 2), (4, "overlap", 2),
+                                                                               (4, "none", 2)]
+    for n, corr, bodies in cases:
+        M = n * 4.0 / 3.0 * math.pi * r ** 3 * rho
+        m = M if bodies == 1 else 0.5 * M
+        k, gamma = m * kpm, m * gpm
+        e_ref, tc_ref = lsd_outcome(k, gamma, m)     # = e1, t1
+        if corr == "none":
+            e_ref, tc_ref = lsd_outcome(n * k, n * gamma, m)
+        dt = t1 / 4000.0
+        steps = int((2e-6 / v0 + 1.6 * t1) / dt)
+        name = "flat%d_%s_%d" % (n, corr, bodies)
+        T.run(args.tdem, corr_scene(n, r, dist, rho, v0, k, gamma, dt, steps, corr, bodies=bodies), d, name)
+        rows = thermo_rows(d, name)
+        t = rows[:, 0] * dt
+        if bodies == 1:
+            xi, vrel = r - rows[:, 1], rows[:, 2]
+        else:
+            xi, vrel = 2 * r - (rows[:, 1] - rows[:, 3]), rows[:, 2] - rows[:, 4]
+        ct = crossing_times(t, xi)
+        if ct is None:
+            checks.check(False, "corrflat %s: no contact" % name)
+            continue
+        e, tc = vrel[-1] / v0, ct[1] - ct[0]
+        err_e, err_t = e / e_ref - 1, tc / tc_ref - 1
+        what = "wall" if bodies == 1 else "rod on rod"
+        print("corrflat N=%d %s, correction %s: e = %.6f (%.6f, %.1e), t_c = %.6e s (%.6e, %.1e)"
+              % (n, what, corr, e, e_ref, err_e, tc, tc_ref, err_t))
+        checks.check(abs(err_e) < 1e-3 and abs(err_t) < 1e-3,
+                     "corrflat N=%d %s, correction %s: e, t_c = %s closed form (%.1e, %.1e < 1e-3)"
+                     % (n, what, corr, "single-contact" if corr != "none" else "N-contact", err_e, err_t))
+
+
+def force_series(d, dump, ids):
+    fr = T.read_dump(os.path.join(d, dump))
+    steps = np.array([f[0] for f in fr])
+    F = np.array([f[2][np.isin(f[2][:, 0], ids), 3].sum() for f in fr])
+    return steps, F
+
+
+def part_corrcont(args, checks):
+    """Continuity: a rod of 4 spheres, tilted by 2e-4 rad, dropped on the wall (no damping, e = 1): its
+    contacts close one after another. The body's normal force F (sum of the spheres' fz, every step):
+    with `overlap` the largest step-to-step change stays below 3 k v0 dt (a smooth overlap-driven change
+    of one contact of stiffness k at the approach speed v0; derivation in docs/clumps_liggghts.md),
+    with `count` F jumps by about F/(N_c + 1) when a contact closes (detected: > 10 k v0 dt)."""
+    r, rho, dist, v0, t1 = CORR_R, CORR_RHO, CORR_DIST, CORR_V, CORR_T
+    n = 4
+    M = n * 4.0 / 3.0 * math.pi * r ** 3 * rho
+    kpm, _ = lsd_rates(1.0, t1)
+    k = M * kpm
+    dt = t1 / 4000.0
+    steps = int((2e-6 / v0 + 2.0 * t1) / dt)
+    tilt = 2e-4
+    d = T.workdir(args, "tdem_lig_clump_corrcont")
+    res = {}
+    for corr in ("overlap", "count"):
+        name = "cont_" + corr
+        T.run(args.tdem, corr_scene(n, r, dist, rho, v0, k, 0.0, dt, steps, corr, tilt=tilt, dump="dump." + corr), d, name)
+        st, F = force_series(d, "dump." + corr, np.arange(1, n + 1))
+        dF = np.abs(np.diff(F))
+        res[corr] = (dF.max(), F.max())
+    bound = k * v0 * dt
+    print("corrcont: tilted rod N=4: max |dF| per step: overlap %.4g N, count %.4g N; k v0 dt = %.4g N; max F %.4g N"
+          % (res["overlap"][0], res["count"][0], bound, res["overlap"][1]))
+    checks.check(res["overlap"][1] > 100 * bound, "corrcont: the rod was loaded (F max %.3g N)" % res["overlap"][1])
+    checks.check(res["overlap"][0] < 3 * bound, "corrcont: overlap: no jump (max |dF| %.3g < 3 k v0 dt = %.3g N)"
+                 % (res["overlap"][0], 3 * bound))
+    checks.check(res["count"][0] > 10 * bound, "corrcont: count: the jump at a closing contact is detected "
+                 "(max |dF| %.3g > 10 k v0 dt = %.3g N)" % (res["count"][0], 10 * bound))
+
+
+def dimer_local_mass(r, dist, rho, tilt):
+    """m_loc of the lower sphere's contact with a z wall, and the sphere mass (closed form of two disjoint
+    spheres: I_perp = 2 (2/5 m r^2 + m (d/2)^2))."""
+    m = 4.0 / 3.0 * math.pi * r ** 3 * rho
+    M = 2 * m
+    I_perp = 2 * (0.4 * m * r * r + m * (0.5 * dist) ** 2)
+    arm = 0.5 * dist * math.cos(tilt)
+    return 1.0 / (1.0 / M + arm * arm / I_perp), m
+
+
+def part_corrlocal(args, checks):
+    """local_mass: a dimer tilted by 30 degrees, frictionless, (e, t_c) law (k, gamma = m* rates): one sphere
+    hits the wall off the centre-of-mass line. The normal velocity of the contact point (= the lower
+    sphere's vz: omega x n has no normal part) after/before = the law's e to 1e-3 with local_mass; with
+    none (m* = the sphere mass) it is the closed form of the rates on m_loc instead, and differs."""
+    r, rho, dist, e1, t1, v0 = CORR_R, CORR_RHO, 2.5 * CORR_R, CORR_E, 2e-5, CORR_V
+    tilt = math.radians(30.0)
+    mloc, msph = dimer_local_mass(r, dist, rho, tilt)
+    kpm, gpm = lsd_rates(e1, t1)
+    e_none, _ = lsd_outcome(msph * kpm, msph * gpm, mloc)
+    d = T.workdir(args, "tdem_lig_clump_corrlocal")
+    dt = t1 / 4000.0
+    steps = int((2e-6 / v0 + 1.3 * t1) / dt)
+    out = {}
+    for corr in ("local_mass", "none"):
+        name = "loc_" + corr
+        text = corr_scene(2, r, dist, rho, v0, 0, 0, dt, steps, corr, tilt=tilt, restitution=(e1, t1),
+                          dump="dump." + corr)
+        T.run(args.tdem, text, d, name)
+        fr = T.read_dump(os.path.join(d, "dump." + corr))
+        z = np.array([f[2][0, 1] for f in fr])   # lower sphere (id 1, tilted down)
+        vz = np.array([f[2][0, 2] for f in fr])
+        z2 = np.array([f[2][1, 1] for f in fr])
+        xi = r - z
+        ins = np.where(xi > 0)[0]
+        if len(ins) == 0 or ins[-1] + 1 >= len(z):
+            checks.check(False, "corrlocal %s: no complete contact" % corr)
+            continue
+        out[corr] = (-vz[ins[-1] + 1] / vz[ins[0] - 1], (r - z2).max())
+    if len(out) < 2:
+        return
+    print("corrlocal: dimer at 30 deg, m_loc/m_sphere = %.4f: contact-point e with local_mass %.6f (law %.2f, %.1e), "
+          "with none %.6f (closed form on m_loc %.6f)" % (mloc / msph, out["local_mass"][0], e1,
+                                                           out["local_mass"][0] / e1 - 1, out["none"][0], e_none))
+    checks.check(out["local_mass"][1] < 0 and out["none"][1] < 0, "corrlocal: the upper sphere never touched")
+    checks.check(abs(out["local_mass"][0] / e1 - 1) < 1e-3,
+                 "corrlocal: local_mass: contact-point e = the law's e (%.1e < 1e-3)" % (out["local_mass"][0] / e1 - 1))
+    checks.check(abs(out["none"][0] / e_none - 1) < 2e-3 and abs(out["none"][0] - e1) > 5e-3,
+                 "corrlocal: none: e %.5f = closed form with m* = sphere mass on m_loc (%.5f), not %.2f"
+                 % (out["none"][0], e_none, e1))
+
+
+def part_corrpar(args, checks):
+    """-np 2 = -np 1 and restart = one run, with `correction overlap` (the pour scene: tetra clumps on each
+    other and on the walls, contacts tallied over both ranks)."""
+    corr = "overlap"
+    n = CORR_NPOUR
+    d1 = T.workdir(args, "tdem_lig_clump_corrpar1")
+    d2 = T.workdir(args, "tdem_lig_clump_corrpar2")
+    T.run(args.tdem, pour_scene(n, correction=corr), d1, "pour")
+    T.run(args.tdem, "processors 2 1 1\n" + pour_scene(n, correction=corr), d2, "pour", np_=2, mpirun=args.mpirun)
+    a = last_frame(d1)
+    b = last_frame(d2)
+    a0 = T.read_dump(os.path.join(d1, "dump.pour"))[0][2]
+    fell = (a0[:, 4] - a[2][:, 4]).max()
+    checks.check(a[0] == b[0] == n and fell > 0.01, "corrpar: both at step %d, the clumps fell %.3g m" % (n, fell))
+    diff = np.abs(a[2] - b[2]).max()
+    print("corrpar: correction %s, -np 2 vs -np 1 after %d steps: largest difference of x, v, omega %.3e" % (corr, n, diff))
+    checks.check(diff == 0.0, "corrpar: -np 2 = -np 1 bitwise with correction %s (%.1e)" % (corr, diff))
+    # the correction acted: the same run without it ends elsewhere
+    d0 = T.workdir(args, "tdem_lig_clump_corrpar0")
+    T.run(args.tdem, pour_scene(n), d0, "pour")
+    c = last_frame(d0)
+    dc = np.abs(a[2][:, 2:5] - c[2][:, 2:5]).max()
+    checks.check(dc > 1e-6, "corrpar: the correction changed the run (positions differ from none by %.2e m)" % dc)
+    # flat impacts with the contacts of one body pair on both ranks: a rod of 4 on the wall split at x = 0
+    # (processors 2 1 1: each rank counts its 2 contacts, the merge gives 4), a rod on a rod split at z = 0
+    # between them (processors 1 1 2: every contact has a ghost partner, counted on one rank only)
+    r, rho, dist, e1, t1, v0 = CORR_R, CORR_RHO, CORR_DIST, CORR_E, CORR_T, CORR_V
+    kpm, gpm = lsd_rates(e1, t1)
+    for bodies, grid in ((1, "2 1 1"), (2, "1 1 2")):
+        for c in ("count", "overlap"):
+            M = 4 * 4.0 / 3.0 * math.pi * r ** 3 * rho
+            m = M if bodies == 1 else 0.5 * M
+            dt = t1 / 4000.0
+            steps = int((2e-6 / v0 + 1.6 * t1) / dt)
+            text = corr_scene(4, r, dist, rho, v0, m * kpm, m * gpm, dt, steps, c, bodies=bodies)
+            name = "split%d_%s" % (bodies, c)
+            T.run(args.tdem, text, d1, name)
+            T.run(args.tdem, "processors %s\n" % grid + text, d2, name, np_=2, mpirun=args.mpirun)
+            r1, r2 = thermo_rows(d1, name), thermo_rows(d2, name)
+            t = r2[:, 0] * dt
+            xi = r - r2[:, 1] if bodies == 1 else 2 * r - (r2[:, 1] - r2[:, 3])
+            vrel = r2[:, 2] if bodies == 1 else r2[:, 2] - r2[:, 4]
+            ct = crossing_times(t, xi)
+            e, tc = vrel[-1] / v0, ct[1] - ct[0]
+            what = "rod on wall split in x" if bodies == 1 else "rod on rod split in z"
+            print("corrpar: %s, correction %s, -np 2: e = %.6f, t_c = %.6e s" % (what, c, e, tc))
+            checks.check(abs(e / e1 - 1) < 1e-3 and abs(tc / t1 - 1) < 1e-3 and np.array_equal(r1, r2),
+                         "corrpar: %s, %s, -np 2: single-contact e, t_c (%.1e, %.1e) and = -np 1 bitwise"
+                         % (what, c, e / e1 - 1, tc / t1 - 1))
+    half = 7 * n // 10
+    d = T.workdir(args, "tdem_lig_clump_corrrestart")
+    T.run(args.tdem, pour_scene(half, restart="mid.restart", correction=corr), d, "first")
+    T.run(args.tdem, pour_scene(n - half, read="mid.restart", correction=corr), d, "second")
+    e = T.read_dump(os.path.join(d, "dump.pour"))[-1]
+    diff = np.abs(a[2] - e[2]).max()
+    print("corrpar: restart %d + %d vs %d steps: largest difference %.3e" % (half, n - half, n, diff))
+    checks.check(e[0] == n and diff == 0.0, "corrpar: restart continues identically with correction %s (%.1e)"
+                 % (corr, diff))
+
+
+CORR_NPOUR = 10000
+
+
 def main():
     def extra(p):
         p.add_argument("--part", required=True,
-                       choices=["nve", "torquefree", "flatface", "parallel", "restart", "insert", "bad", "examples", "periodic"])
+                       choices=["nve", "torquefree", "flatface", "parallel", "restart", "insert", "bad", "examples", "periodic",
+                                "corrflat", "corrcont", "corrlocal", "corrpar"])
     args = T.parse_args(extra)
     checks = T.Checks()
     globals()["part_" + args.part](args, checks)

@@ -1,11 +1,13 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # fix tdem/clump for LIGGGHTS (module 'clump', src/clumps/liggghts; docs/clumps_liggghts.md): included by
 # tests/host/liggghts/CMakeLists.txt. One-sphere clumps = nve/sphere, torque-free asymmetric body,
-# flat-face impacts against the N-contact closed form, -np 2 = -np 1, restart, insertion, bad input.
+# flat-face impacts against the N-contact closed form, -np 2 = -np 1, restart, insertion, bad input;
+# the multiple-contact correction (corr*: count/overlap flat impacts, continuity, local_mass, -np 2 and restart).
 if(NOT TDEM_LIGGGHTS_CLUMP)
   return()
 endif()
-foreach(_part nve torquefree flatface parallel restart insert bad examples periodic)
+foreach(_part nve torquefree flatface parallel restart insert bad examples periodic
+              corrflat corrcont corrlocal corrpar)
   add_test(NAME liggghts.clump.${_part}
            COMMAND ${TDEM_LIGGGHTS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py --part ${_part}
                    --tdem $<TARGET_FILE:tdem-liggghts> --stock ${TDEM_LIGGGHTS_STOCK}
@@ -15,4 +17,4 @@ foreach(_part nve torquefree flatface parallel restart insert bad examples perio
                        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
 set_tests_properties(liggghts.clump.parallel liggghts.clump.insert liggghts.clump.examples
-                     liggghts.clump.periodic PROPERTIES PROCESSORS 2)
+                     liggghts.clump.periodic liggghts.clump.corrpar PROPERTIES PROCESSORS 2)
