@@ -14,6 +14,9 @@
    with the mixing measures P' (compute tdem/mixing/velocity) and D, Q' (fix tdem/mixing/depth):
    the short version of validation/grate/run.sh; bar and particle VTK files for ParaView and the
    mixing plots in build/showcase/grate.
+4. Rigid multi-sphere clumps (fix tdem/clump) on 2 MPI ranks: 2000 tetra-sphere and rod clumps
+   inserted with random orientations and poured into a box (input_scripts/liggghts/clumps_pour.in);
+   particle dumps for ParaView in build/showcase/clumps.
 
 Writes build/showcase/impact.csv and impact.png and prints the tables.
 Usage: python3 tools/showcase.py [BUILD_DIR]
@@ -225,6 +228,58 @@ def settle(tmp):
     return res
 
 
+def clumps(n_per_kind=1000, steps=12000):
+    """Pour 2 x n_per_kind clumps; returns (thermo first, thermo last, seconds, clumps, spheres,
+    largest change of an intra-clump distance, highest sphere centre)."""
+    w = os.path.join(OUT, "clumps")
+    shutil.rmtree(w, ignore_errors=True)
+    os.makedirs(w)
+    text = open(os.path.join(HERE, "input_scripts", "liggghts", "clumps_pour.in")).read()
+    marker = "# dump          d all custom 2000 dump.clumps id mol type x y z radius"
+    if marker not in text:
+        raise SystemExit("showcase: the dump line of clumps_pour.in moved")
+    text = text.replace(marker, "dump            d all custom %d dump.clumps id mol type x y z radius\n"
+                        "dump_modify     d format \"%%d %%d %%d %%.16g %%.16g %%.16g %%.16g\"" % (steps // 6))
+    with open(os.path.join(w, "in.clumps"), "w") as f:
+        f.write(text)
+    t0 = time.time()
+    r = subprocess.run(MPIRUN + [LIG, "-in", "in.clumps", "-log", "log.clumps", "-var", "n", str(n_per_kind),
+                                 "-var", "steps", str(steps)], cwd=w, capture_output=True, text=True)
+    secs = time.time() - t0
+    if r.returncode != 0:
+        sys.stderr.write(r.stdout[-3000:] + r.stderr[-3000:])
+        raise SystemExit("showcase: the clump pour failed")
+    thermo = [l for l in r.stdout.splitlines() if l.split() and all(_is_number(x) for x in l.split())]
+    frames = []
+    with open(os.path.join(w, "dump.clumps")) as f:
+        lines = f.read().splitlines()
+    k = 0
+    while k < len(lines):
+        if lines[k].startswith("ITEM: NUMBER OF ATOMS"):
+            n = int(lines[k + 1])
+            k += 7  # bounds header and ITEM: ATOMS line
+            rows = sorted((tuple(float(v) for v in l.split()) for l in lines[k:k + n]), key=lambda a: a[0])
+            frames.append(rows)
+            k += n
+        else:
+            k += 1
+    first, last = frames[0], frames[-1]
+
+    def distances(rows):
+        by_mol = {}
+        for a in rows:
+            by_mol.setdefault(int(a[1]), []).append(a[3:6])
+        out = {}
+        for m, ps in by_mol.items():
+            out[m] = [math.dist(ps[i], ps[j]) for i in range(len(ps)) for j in range(i + 1, len(ps))]
+        return out
+
+    d0, d1 = distances(first), distances(last)
+    worst = max(abs(a - b) for m in d0 for a, b in zip(d0[m], d1[m]))
+    top = max(a[5] for a in last)
+    return thermo[0], thermo[-1], secs, len(d1), len(last), worst, top
+
+
 def main():
     for exe in (LIG, LMP):
         if not os.access(exe, os.X_OK):
@@ -265,6 +320,13 @@ def main():
             sys.stderr.write(r.stderr[-3000:])
             raise SystemExit("showcase: the grate scenes failed")
         print("grate scenes: %.0f s; VTK files (bars and particles) and plots in %s" % (time.time() - t0, grate))
+        print("\n== 4. Rigid clumps poured into a box, mpirun -np 2 (input_scripts/liggghts/clumps_pour.in) ==")
+        first, last, secs, nbody, nsph, worst, top = clumps()
+        print("%d clumps (tetra-sphere and 3-sphere rods, %d spheres), %.0f s\n"
+              "  thermo (step atoms KE_tetra KE_rods n_tetra n_rods) first: %s\n"
+              "                                                        last:  %s\n"
+              "  largest change of a distance inside a clump: %.1e m; highest sphere centre %.4f m; dumps in %s"
+              % (nbody, nsph, secs, first.strip(), last.strip(), worst, top, os.path.join(OUT, "clumps")))
         print("\nOutput in %s" % OUT)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
