@@ -852,6 +852,9 @@ def main():
 #            step-to-step change of the body's normal force, count vs overlap
 #   local    a dimer hitting the wall at 10..80 deg, frictionless, tdem/lsd parameters restitution: the
 #            contact point's normal e with local_mass (= the law's e) and none (= closed form on m_loc)
+#   stock    flat rods with the stock `model hertz tangential history`: the correction (through the surface
+#            model tdem/clump, any model) against a one-contact ODE of LIGGGHTS's hertz law
+# A correction needs `surface tdem/clump` in the pair style and the wall (added by lig_scene).
 LIG_HEAD = """atom_style hybrid sphere molecular
 atom_modify map array
 boundary f f f
@@ -875,7 +878,7 @@ def lig_outcome(k, gamma, m):
     return math.exp(-math.pi * beta / math.sqrt(1 - beta * beta)), math.pi / (w0 * math.sqrt(1 - beta * beta))
 
 
-def lig_scene(n, dist, k, gamma, dt, steps, corr, tilt=0.0, restitution=None):
+def lig_scene(n, dist, k, gamma, dt, steps, corr, tilt=0.0, restitution=None, hertz=None):
     r, gap = LIG_R, 2e-6
     shape = "single %g 0" % r if n == 1 else ("dimer %g %g" % (r, dist) if n == 2 else "rod %g %g %d" % (r, dist, n))
     zc = r + gap + 0.5 * (n - 1) * dist * math.sin(abs(tilt))
@@ -885,7 +888,13 @@ def lig_scene(n, dist, k, gamma, dt, steps, corr, tilt=0.0, restitution=None):
         s = (i - 0.5 * (n - 1)) * dist
         L.append("create_atoms 1 single %.17g 0 %.17g units box" % (s * math.cos(tilt), zc + s * math.sin(tilt)))
     L += ["set group all diameter %.17g density %.17g" % (2 * r, LIG_RHO), "set group all mol 1 vz %.17g" % -LIG_V]
-    if restitution:
+    model = "tdem/lsd tangential no_history"
+    if hertz:   # stock LIGGGHTS model hertz tangential history: (E, nu, e)
+        model, law = "hertz tangential history", ""
+        L += ["fix m_E all property/global youngsModulus peratomtype %.17g" % hertz[0],
+              "fix m_nu all property/global poissonsRatio peratomtype %.17g" % hertz[1],
+              "fix m_e all property/global coefficientRestitution peratomtypepair 1 %.17g" % hertz[2]]
+    elif restitution:
         law = "parameters restitution"
         L += ["fix m_e all property/global coefficientRestitution peratomtypepair 1 %.17g" % restitution[0],
               "fix m_tc all property/global contactTime peratomtypepair 1 %.17g" % restitution[1],
@@ -896,10 +905,13 @@ def lig_scene(n, dist, k, gamma, dt, steps, corr, tilt=0.0, restitution=None):
               "fix m_kt all property/global kt peratomtypepair 1 %.17g" % k,
               "fix m_gn all property/global gamman_abs peratomtypepair 1 %.17g" % gamma,
               "fix m_gt all property/global gammat_abs peratomtypepair 1 0.0"]
+    # the correction acts through the surface model tdem/clump of the pair style and the wall
+    surf = " surface tdem/clump" if corr != "none" else ""
     L += ["fix m_mu all property/global coefficientFriction peratomtypepair 1 0.0",
-          "pair_style gran model tdem/lsd tangential no_history %s" % law, "pair_coeff * *", "timestep %.17g" % dt,
+          "pair_style gran model %s%s %s" % (model, surf, law), "pair_coeff * *",
+          "timestep %.17g" % dt,
           "fix c all tdem/clump template rod shape %s density %.17g correction %s" % (shape, LIG_RHO, corr),
-          "fix w all wall/gran model tdem/lsd tangential no_history primitive type 1 zplane 0.0 %s" % law,
+          "fix w all wall/gran model %s%s primitive type 1 zplane 0.0 %s" % (model, surf, law),
           "dump d all custom 1 dump.lig id z vz fz", "dump_modify d format \"%d %.17g %.17g %.17g\"",
           "thermo_style custom step f_c[1][4] f_c[1][7]", "thermo_modify format float %.17g", "thermo 1",
           "run %d" % steps]
@@ -992,15 +1004,69 @@ def lig_local(exe):
     return rows
 
 
+def lig_hertz_ode(E, nu, r, e_in, M, meff, v0):
+    """one LIGGGHTS hertz contact (sphere r on a wall of the same material, damping on m* = meff) moving a
+    mass M at approach speed v0, RK4: (e, t_c). F = 4/3 Y* sqrt(r) xi^1.5 + 2 sqrt(5/6) |beta|
+    sqrt(2 Y* sqrt(r xi) meff) dxi/dt, Y* = E / (2 (1 - nu^2)), beta = ln e / sqrt(ln^2 e + pi^2)."""
+    Y = E / (2.0 * (1.0 - nu * nu))
+    lne = math.log(e_in)
+    beta = -lne / math.sqrt(lne * lne + math.pi ** 2)
+    K = 4.0 / 3.0 * Y * math.sqrt(r)
+
+    def acc(x, v):
+        xp = max(x, 0.0)
+        return -(K * xp ** 1.5 + 2.0 * math.sqrt(5.0 / 6.0) * beta * math.sqrt(2.0 * Y * math.sqrt(r * xp) * meff) * v) / M
+
+    xmax = (5.0 * M * v0 * v0 / (4.0 * K)) ** 0.4
+    h = 2.0 * xmax / v0 / 20000.0
+    x, v, t = 0.0, v0, 0.0
+    while True:
+        k1x, k1v = v, acc(x, v)
+        k2x, k2v = v + 0.5 * h * k1v, acc(x + 0.5 * h * k1x, v + 0.5 * h * k1v)
+        k3x, k3v = v + 0.5 * h * k2v, acc(x + 0.5 * h * k2x, v + 0.5 * h * k2v)
+        k4x, k4v = v + h * k3v, acc(x + h * k3x, v + h * k3v)
+        xn = x + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x)
+        vn = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
+        if xn < 0.0 and t > 0.0:
+            f = x / (x - xn)
+            return -(v + f * (vn - v)) / v0, t + f * h
+        x, v, t = xn, vn, t + h
+
+
+def lig_stock(exe):
+    """stock `model hertz tangential history` (+ surface tdem/clump), flat rods on the wall, e_in = 0.8."""
+    E, nu, e_in = 5e7, 0.3, 0.8
+    m = 4.0 / 3.0 * math.pi * LIG_R ** 3 * LIG_RHO
+    rows = []
+    for n in (1, 2, 4, 8):
+        M = n * m
+        tc1 = lig_hertz_ode(E, nu, LIG_R, 1.0 - 1e-12, M, m, LIG_V)[1]
+        dt = tc1 / 4000.0
+        for corr in ("none", "count", "overlap"):
+            mass = m if corr == "none" else M
+            e_ref, t_ref = lig_hertz_ode(E, nu, LIG_R, e_in, mass, m, LIG_V)
+            fr = lig_run(exe, lig_scene(n, LIG_DIST, 0, 0, dt, int((2e-6 + 1.3 * tc1) / dt), corr, hertz=(E, nu, e_in)))
+            t = np.array([s for s, _ in fr]) * dt
+            xi = LIG_R - np.array([a[:, 1].min() for _, a in fr])
+            vz = np.array([a[:, 2].mean() for _, a in fr])
+            ins = np.where(xi > 0)[0]
+            a0, b0 = ins[0], ins[-1]
+            tin = t[a0 - 1] + (t[a0] - t[a0 - 1]) * (-xi[a0 - 1]) / (xi[a0] - xi[a0 - 1])
+            tout = t[b0] + (t[b0 + 1] - t[b0]) * (-xi[b0]) / (xi[b0 + 1] - xi[b0])
+            rows.append(dict(n=n, corr=corr, e=vz[-1] / LIG_V, tc=tout - tin, e_ref=e_ref, tc_ref=t_ref))
+    return rows
+
+
 def liggghts_correction_main(argv):
     a = args_of(argv)
     exe = os.path.abspath(a["liggghts"])
     flat = lig_flat(exe)
     tilted, series = lig_tilted(exe)
     local = lig_local(exe)
+    stock = lig_stock(exe)
     os.makedirs(RES, exist_ok=True)
     with open(os.path.join(RES, "liggghts_correction.json"), "w") as f:
-        json.dump(dict(flat=flat, tilted=tilted, local=local), f, indent=1, default=float)
+        json.dump(dict(flat=flat, tilted=tilted, local=local, stock=stock), f, indent=1, default=float)
     md = ["# LIGGGHTS fix tdem/clump: multiple-contact correction (study.py --liggghts)", "",
           "## Flat rods on a wall (tdem/lsd, k and gamma per contact from the body mass for e = 0.8, t_c = 1e-4 s)", "",
           "| N | correction | e | reference | t_c (s) | reference | rel. error e, t_c |", "|---|---|---|---|---|---|---|"]
@@ -1022,6 +1088,19 @@ def liggghts_correction_main(argv):
            "| angle (deg) | m_loc / m_sphere | local_mass | none | none, closed form on m_loc |", "|---|---|---|---|---|"]
     for r in local:
         md.append("| %d | %.4f | %.6f | %.6f | %.6f |" % (r["deg"], r["mloc_over_msphere"], r["e_local"], r["e_none"], r["e_none_ref"]))
+    md += ["", "## Stock `model hertz tangential history` + `surface tdem/clump`: flat rods on the wall "
+           "(E = 5e7 Pa, nu = 0.3, e_in = 0.8)", "",
+           "The surface model scales the whole output of any model. Reference: one hertz contact with LIGGGHTS's "
+           "damping on m* = the sphere mass (what LIGGGHTS passes for a clump sphere), integrated by RK4, moving "
+           "the sphere mass (none: N contacts on N sphere masses) or the body mass (count, overlap).", "",
+           "| N | correction | e | reference | t_c (s) | reference | rel. error e, t_c |", "|---|---|---|---|---|---|---|"]
+    for r in stock:
+        md.append("| %d | %s | %.6f | %.6f | %.6e | %.6e | %.1e, %.1e |" % (
+            r["n"], r["corr"], r["e"], r["e_ref"], r["tc"], r["tc_ref"], r["e"] / r["e_ref"] - 1, r["tc"] / r["tc_ref"] - 1))
+    md += ["", "With a damping derived from m* = the sphere share, count/overlap give the e of one contact whose "
+           "damping belongs to the sphere mass acting on the body mass (not e_in); without correction a flat face of "
+           "equal spheres already behaves as one sphere (e_in). t_c with count/overlap is that of one contact on the "
+           "body mass."]
     with open(os.path.join(RES, "liggghts_correction.md"), "w") as f:
         f.write("\n".join(md) + "\n")
     try:

@@ -30,7 +30,7 @@
 #include "update.h"
 
 #include "clumps/host_bodies.h"
-#include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_ids.h"
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
@@ -743,18 +743,19 @@ void FixTdemClump::final_integrate() {
 
 /* ---------------------------------------------------------------------- multiple-contact correction */
 
-// The granular pair and the wall/gran fixes whose contacts are tallied, and a warning for contact
-// models the correction does not reach (stock normal models).
+// The granular pair and the wall/gran fixes whose contacts are tallied. The correction acts through
+// the surface model tdem/clump (surface_model_tdem_clump.h): a pair style or wall/gran fix without
+// it is an error (its clump contacts would silently stay uncorrected).
 void FixTdemClump::setup_correction() {
-  namespace ad = tdem::liggghts::advice;
+  const std::string what = where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': ";
   pair_gran_ = force->pair ? dynamic_cast<PairGran*>(force->pair) : nullptr;
   if (force->pair && !pair_gran_)
-    fail(where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': pair style '" +
-         std::string(force->pair_style) + "' is not a granular pair style (pair_style gran model tdem/...)");
-  if (pair_gran_ && !ad::find(static_cast<LIGGGHTS::IContactHistorySetup*>(pair_gran_)) && comm->me == 0)
-    error->warning(FLERR, (where_ + ": keyword 'correction': the pair style has no tdem normal model; only "
-                                    "'model tdem/...' applies the multiple-contact correction")
-                              .c_str());
+    fail(what + "pair style '" + std::string(force->pair_style) +
+         "' is not a granular pair style (pair_style gran model ... surface tdem/clump)");
+  if (pair_gran_ && !pair_gran_->contact_match("surface", tdem::liggghts::kSurfaceClumpName))
+    fail(what + "pair style '" + std::string(force->pair_style) +
+         "' has no 'surface tdem/clump'; add 'surface tdem/clump' to its contact model (pair_style gran model M "
+         "tangential T surface tdem/clump), through which the correction acts");
   walls_.clear();
   wall_sides_.clear();
   for (int m = 0; m < modify->nfix; m++) {
@@ -762,15 +763,14 @@ void FixTdemClump::setup_correction() {
     if (std::strncmp(f->style, "wall/gran", 9) != 0) continue;
     FixWallGran* w = static_cast<FixWallGran*>(f);
     const void* owner = static_cast<LIGGGHTS::IContactHistorySetup*>(w);
-    if (!ad::find(owner) && comm->me == 0)
-      error->warning(FLERR, (where_ + ": keyword 'correction': fix " + std::string(f->id) +
-                             " has no tdem normal model; only 'model tdem/...' applies the multiple-contact correction")
-                                .c_str());
+    if (!w->contact_match("surface", tdem::liggghts::kSurfaceClumpName))
+      fail(what + "fix " + std::string(f->id) + " (" + std::string(f->style) +
+           ") has no 'surface tdem/clump'; add 'surface tdem/clump' to its contact model (fix ID group wall/gran "
+           "model M tangential T surface tdem/clump ...), through which the correction acts");
     if (w->is_mesh_wall()) {
       if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share)
-        fail(where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': fix " +
-             std::string(f->id) + " is a mesh wall; count and overlap support primitive walls only (allowed with "
-                                  "meshes: none, local_mass)");
+        fail(what + "fix " + std::string(f->id) + " is a mesh wall; count and overlap support primitive walls only "
+                                                    "(allowed with meshes: none, local_mass)");
       continue;
     }
     walls_.push_back(w);

@@ -56,7 +56,7 @@ class FixTdemClump : public Fix, public tdem::liggghts::clump_link::Correction {
   void pre_neighbor();
   void setup_pre_force(int);
   void pre_force(int);
-  // multiple-contact correction (tdem_liggghts_clump_link.h): called by the tdem normal models
+  // multiple-contact correction (tdem_liggghts_clump_link.h): called by the surface model tdem/clump
   double prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const override;
   void reset_dt();
   double compute_scalar();

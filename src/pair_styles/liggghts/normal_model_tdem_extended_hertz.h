@@ -29,7 +29,6 @@
 #include "contact/normal/extended.h"
 #include "tdem_liggghts_fits.h"
 #include "tdem_liggghts_advice.h"
-#include "tdem_liggghts_clump_link.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -94,18 +93,7 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
 
   inline double stressStrainExponent() { return 1.5; }
 
-  // The law; with an active clump correction (tdem_liggghts_clump_link.h) through corrected().
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
-    if (__builtin_expect(tdem::liggghts::clump_link::active != nullptr, 0)) {
-      tdem::liggghts::clump_link::corrected(
-          [this](SurfacesIntersectData& s, ForceData& fi, ForceData& fj) { intersect_law(s, fi, fj); }, sidata,
-          i_forces, j_forces, advice_owner_);
-      return;
-    }
-    intersect_law(sidata, i_forces, j_forces);
-  }
-
-  inline void intersect_law(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));

@@ -37,7 +37,6 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/linear_viscoelastic.h"
 #include "tdem_liggghts_advice.h"
-#include "tdem_liggghts_clump_link.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -179,18 +178,8 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
 
   inline double stressStrainExponent() { return 1.; }
 
-  // The law; with an active clump correction (tdem_liggghts_clump_link.h) through corrected().
-  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
-    if (__builtin_expect(tdem::liggghts::clump_link::active != nullptr, 0)) {
-      tdem::liggghts::clump_link::corrected(
-          [this](SurfacesIntersectData& s, ForceData& fi, ForceData& fj) { intersect_law(s, fi, fj); }, sidata,
-          i_forces, j_forces, advice_owner_);
-      return;
-    }
-    intersect_law(sidata, i_forces, j_forces);
-  }
-
-  inline void intersect_law(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces,
+                                ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     const double meff = sidata.meff;
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);

@@ -72,6 +72,8 @@ void register_tangential_walton_braun();
 void register_tangential_mindlin_deresiewicz();
 void register_tangential_mindlin_no_slip();
 void register_tangential_di_renzo();
+void register_clump_a();  // surface tdem/clump (register_clump_{a,b}.cpp)
+void register_clump_b();
 
 }  // namespace detail
 }  // namespace liggghts

@@ -90,6 +90,7 @@ const Names& names() {
     r.tangential[TDEM_MINDLIN_DERESIEWICZ] = kTangentialMindlinDeresiewiczName;
     r.tangential[TDEM_MINDLIN_NO_SLIP] = kTangentialMindlinNoSlipName;
     r.tangential[TDEM_DI_RENZO] = kTangentialDiRenzoName;
+    r.surface[TDEM_CLUMP_SURFACE] = kSurfaceClumpName;
     return r;
   }();
   return n;
@@ -170,10 +171,11 @@ int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models
     return hash;  // LIGGGHTS reports the remaining cases (all models off, keyword order)
   }
   const int normal = static_cast<int>(hash & 63), tangential = static_cast<int>((hash >> 6) & 63);
+  const int surface = static_cast<int>((hash >> 24) & 63);
   if ((normal == TDEM_LSD || normal == TDEM_HERTZ || normal == TDEM_WALTON_BRAUN ||
        normal == TDEM_THORNTON || normal == TDEM_CONTINUOUS_POTENTIAL || normal == TDEM_POWER_LAW ||
        normal == TDEM_EXTENDED_LINEAR || normal == TDEM_EXTENDED_HERTZ || tangential == TDEM_CUNDALL_STRACK ||
-       (tangential >= TDEM_HAFF_WERNER && tangential <= TDEM_DI_RENZO)) &&
+       (tangential >= TDEM_HAFF_WERNER && tangential <= TDEM_DI_RENZO) || surface == TDEM_CLUMP_SURFACE) &&
       !compiled().count(hash)) {
     std::string list;
     for (int64_t h : compiled()) list += "\n  " + describe(h);
@@ -209,6 +211,7 @@ void register_styles() {
   models.addTangentialModel(kTangentialMindlinDeresiewiczName, TDEM_MINDLIN_DERESIEWICZ);
   models.addTangentialModel(kTangentialMindlinNoSlipName, TDEM_MINDLIN_NO_SLIP);
   models.addTangentialModel(kTangentialDiRenzoName, TDEM_DI_RENZO);
+  models.addSurfaceModel(kSurfaceClumpName, TDEM_CLUMP_SURFACE);
   detail::register_lsd_a();
   detail::register_lsd_b();
   detail::register_stock_hooke();
@@ -227,6 +230,8 @@ void register_styles() {
   detail::register_tangential_mindlin_deresiewicz();
   detail::register_tangential_mindlin_no_slip();
   detail::register_tangential_di_renzo();
+  detail::register_clump_a();
+  detail::register_clump_b();
 }
 
 void attach(LAMMPS_NS::LAMMPS* lmp) {

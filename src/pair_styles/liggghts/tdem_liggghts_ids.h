@@ -27,6 +27,8 @@ static const int TDEM_WALTON_BRAUN_T = 43;        // tangential tdem/walton_brau
 static const int TDEM_MINDLIN_DERESIEWICZ = 44;   // tangential tdem/mindlin_deresiewicz
 static const int TDEM_MINDLIN_NO_SLIP = 45;       // tangential tdem/mindlin_no_slip
 static const int TDEM_DI_RENZO = 46;              // tangential tdem/di_renzo
+// surface models (stock 0-5)
+static const int TDEM_CLUMP_SURFACE = 40;         // surface tdem/clump (clump multiple-contact correction)
 
 }  // namespace ContactModels
 }  // namespace LIGGGHTS
@@ -48,5 +50,6 @@ inline constexpr const char* kTangentialWaltonBraunName = "tdem/walton_braun";
 inline constexpr const char* kTangentialMindlinDeresiewiczName = "tdem/mindlin_deresiewicz";
 inline constexpr const char* kTangentialMindlinNoSlipName = "tdem/mindlin_no_slip";
 inline constexpr const char* kTangentialDiRenzoName = "tdem/di_renzo";
+inline constexpr const char* kSurfaceClumpName = "tdem/clump";
 }  // namespace liggghts
 }  // namespace tdem

@@ -247,6 +247,8 @@ def part_flatface(args, checks):
 def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40, correction=None):
     """A box with 40 tetra clumps poured onto the floor. steps_b: a second run after write_restart."""
     lines = [HEAD]
+    # the correction acts through the surface model tdem/clump (docs/clumps_liggghts.md)
+    surf = " surface tdem/clump" if correction and correction != "none" else ""
     if read:
         lines = ["read_restart %s" % read, "newton off", "communicate single vel yes"]
     else:
@@ -257,15 +259,15 @@ def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40, correc
               "fix m3 all property/global coefficientRestitution peratomtypepair 1 0.6",
               "fix m4 all property/global coefficientFriction peratomtypepair 1 0.5",
               "fix m5 all property/global tangentialStiffnessRatio peratomtypepair 1 0.82",
-              "pair_style gran model tdem/hertz tangential tdem/cundall_strack limitForce on", "pair_coeff * *",
+              "pair_style gran model tdem/hertz tangential tdem/cundall_strack%s limitForce on" % surf, "pair_coeff * *",
               "timestep 5e-6",
               "region ins block 0.005 0.055 0.005 0.055 0.01 0.11 units box",
               "fix c all tdem/clump template t shape tetra 0.003 0.0045 density 2500 insert %d region ins seed 7 "
               "vel 0 0 -0.5%s" % (nclump, " correction " + correction if correction else ""),
               "fix gr all gravity 9.81 vector 0 0 -1"]
     for i, (dim, pos) in enumerate([("z", 0.0), ("x", 0.0), ("x", 0.06), ("y", 0.0), ("y", 0.06)]):
-        lines.append("fix w%d all wall/gran model tdem/hertz tangential tdem/cundall_strack primitive type 1 %splane %g "
-                     "limitForce on" % (i, dim, pos))
+        lines.append("fix w%d all wall/gran model tdem/hertz tangential tdem/cundall_strack%s primitive type 1 %splane %g "
+                     "limitForce on" % (i, surf, dim, pos))
     lines += ["dump d all custom 1000 dump.pour id mol x y z vx vy vz omegax omegay omegaz",
               "dump_modify d format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"",
               "thermo_style custom step atoms f_c f_c[1]", "thermo_modify format float %.17g", "thermo 1000",
@@ -572,12 +574,14 @@ def lsd_outcome(k, gamma, m):
 
 
 def corr_scene(n, r, dist, rho, v0, k, gamma, dt, steps, correction, tilt=0.0, gap=2e-6, bodies=1,
-               restitution=None, dump=None):
+               restitution=None, dump=None, surface=None, hertz=None):
     """Rods of n spheres (n = 1: one sphere) dropped at v0 on a tdem/lsd zplane (bodies = 1), or a rod
     dropped flat onto an equal resting rod (bodies = 2, no wall). Per-contact k, gamma (absolute), no
     friction, no gravity; tilt: rotation of the rod about y (rad). restitution = (e1, t1): the law by
     `parameters restitution` instead (k, gamma = m* times rates)."""
     shape = "single %g 0" % r if n == 1 else ("dimer %g %g" % (r, dist) if n == 2 else "rod %g %g %d" % (r, dist, n))
+    # the correction acts through the surface model tdem/clump; surface = True / False forces it on / off
+    surf = " surface tdem/clump" if (correction != "none" if surface is None else surface) else ""
     lines = [HEAD, "region b block -0.1 0.1 -0.05 0.05 -0.05 0.05 units box", "create_box 1 b",
              "neighbor 0.001 bin", "neigh_modify delay 0 exclude molecule all"]
     zc = r + gap + 0.5 * (n - 1) * dist * math.sin(abs(tilt))
@@ -592,7 +596,15 @@ def corr_scene(n, r, dist, rho, v0, k, gamma, dt, steps, correction, tilt=0.0, g
     if bodies == 2:
         lines.append("group lower id %d:%d" % (n + 1, 2 * n))
         lines.append("set group lower mol 2 vz 0")
-    if restitution:
+    model = "tdem/lsd tangential no_history"
+    if hertz:
+        # stock LIGGGHTS `model hertz tangential history` (E, nu, e per type); k and gamma unused
+        E, nu, eh = hertz
+        model, law = "hertz tangential history", ""
+        lines += ["fix m_E all property/global youngsModulus peratomtype %.17g" % E,
+                  "fix m_nu all property/global poissonsRatio peratomtype %.17g" % nu,
+                  "fix m_e all property/global coefficientRestitution peratomtypepair 1 %.17g" % eh]
+    elif restitution:
         e1, t1 = restitution
         law = "parameters restitution"
         lines += ["fix m_e all property/global coefficientRestitution peratomtypepair 1 %.17g" % e1,
@@ -605,11 +617,11 @@ def corr_scene(n, r, dist, rho, v0, k, gamma, dt, steps, correction, tilt=0.0, g
                   "fix m_gn all property/global gamman_abs peratomtypepair 1 %.17g" % gamma,
                   "fix m_gt all property/global gammat_abs peratomtypepair 1 0.0"]
     lines += ["fix m_mu all property/global coefficientFriction peratomtypepair 1 0.0",
-              "pair_style gran model tdem/lsd tangential no_history %s" % law,
+              "pair_style gran model %s%s %s" % (model, surf, law),
               "pair_coeff * *", "timestep %.17g" % dt,
               "fix c all tdem/clump template rod shape %s density %.17g correction %s" % (shape, rho, correction)]
     if bodies == 1:
-        lines.append("fix w all wall/gran model tdem/lsd tangential no_history primitive type 1 zplane 0.0 %s" % law)
+        lines.append("fix w all wall/gran model %s%s primitive type 1 zplane 0.0 %s" % (model, surf, law))
         lines.append("thermo_style custom step f_c[1][4] f_c[1][7] f_c[1][2] f_c[1][15] f_c[1][16] f_c[1][17]")
     else:
         lines.append("thermo_style custom step f_c[1][4] f_c[1][7] f_c[2][4] f_c[2][7]")
@@ -828,6 +840,126 @@ def part_corrpar(args, checks):
                  % (corr, diff))
 
 
+def hertz_wall_ode(E, nu, r, e_in, M, meff, v0):
+    """Independent reference: a body of mass M pressed by ONE LIGGGHTS hertz contact (sphere r on a wall
+    of the same material, damping from m* = meff) at approach speed v0 - F = 4/3 Y* sqrt(r) xi^1.5 +
+    2 sqrt(5/6) |beta| sqrt(2 Y* sqrt(r xi) meff) dxi/dt, Y* = E / (2 (1 - nu^2)), beta = ln e /
+    sqrt(ln^2 e + pi^2) (LIGGGHTS's documented hertz law), integrated by RK4. Returns (e, t_c)."""
+    Y = E / (2.0 * (1.0 - nu * nu))
+    lne = math.log(e_in)
+    beta = -lne / math.sqrt(lne * lne + math.pi ** 2)
+    K = 4.0 / 3.0 * Y * math.sqrt(r)
+
+    def acc(x, v):
+        xp = max(x, 0.0)
+        return -(K * xp ** 1.5 + 2.0 * math.sqrt(5.0 / 6.0) * beta * math.sqrt(2.0 * Y * math.sqrt(r * xp) * meff) * v) / M
+
+    xmax = (5.0 * M * v0 * v0 / (4.0 * K)) ** 0.4
+    h = 2.0 * xmax / v0 / 20000.0
+    x, v, t = 0.0, v0, 0.0
+    while True:
+        k1x, k1v = v, acc(x, v)
+        k2x, k2v = v + 0.5 * h * k1v, acc(x + 0.5 * h * k1x, v + 0.5 * h * k1v)
+        k3x, k3v = v + 0.5 * h * k2v, acc(x + 0.5 * h * k2x, v + 0.5 * h * k2v)
+        k4x, k4v = v + h * k3v, acc(x + h * k3x, v + h * k3v)
+        xn = x + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x)
+        vn = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
+        if xn < 0.0 and t > 0.0:
+            f = x / (x - xn)
+            return -(v + f * (vn - v)) / v0, t + f * h
+        x, v, t = xn, vn, t + h
+
+
+def part_corrstock(args, checks):
+    """The correction through `surface tdem/clump` scales the output of ANY model: stock `model hertz
+    tangential history`, a rod of N = 4 spheres dropped flat on the wall (no gravity). Elastic (e = 1):
+    with count / overlap e = 1 and t_c = the Hertz closed form of ONE contact on the BODY mass M,
+    t_c = 2 (xi_max / v0) int_0^1 (1 - x^2.5)^-1/2 dx = (4/5) B(2/5, 1/2) xi_max / v0, xi_max = (5 M v0^2 /
+    (4 K))^(2/5), to 1e-3; without correction the N-contact value (the law on the sphere mass, shorter by
+    4^(2/5)). Damped (e = 0.8): the one-contact ODE (RK4) with LIGGGHTS's hertz damping on m* = the
+    sphere mass that LIGGGHTS passes: count / overlap = one contact on M, none = one contact on m."""
+    r, rho, dist, v0, E, nu = CORR_R, CORR_RHO, CORR_DIST, CORR_V, 5e7, 0.3
+    n = 4
+    m = 4.0 / 3.0 * math.pi * r ** 3 * rho
+    M = n * m
+    Y = E / (2.0 * (1.0 - nu * nu))
+    K = 4.0 / 3.0 * Y * math.sqrt(r)
+    beta_int = 0.4 * math.gamma(0.4) * math.gamma(0.5) / math.gamma(0.9)   # int_0^1 (1 - x^2.5)^-1/2 dx
+
+    def tc_closed(mass):
+        return 2.0 * beta_int * (5.0 * mass * v0 * v0 / (4.0 * K)) ** 0.4 / v0
+
+    d = T.workdir(args, "tdem_lig_clump_corrstock")
+    dt = tc_closed(M) / 4000.0
+    steps = int((2e-6 / v0 + 1.3 * tc_closed(M)) / dt)
+    for e_in in (1.0, 0.8):
+        for corr in ("count", "overlap", "none"):
+            mass = m if corr == "none" else M
+            if e_in == 1.0:
+                e_ref, tc_ref, what = 1.0, tc_closed(mass), "Hertz closed form"
+            else:
+                e_ref, tc_ref = hertz_wall_ode(E, nu, r, e_in, mass, m, v0)
+                what = "one-contact ODE"
+            name = "stock_%s_%g" % (corr, e_in)
+            T.run(args.tdem, corr_scene(n, r, dist, rho, v0, 0, 0, dt, steps, corr, hertz=(E, nu, e_in)), d, name)
+            rows = thermo_rows(d, name)
+            ct = crossing_times(rows[:, 0] * dt, r - rows[:, 1])
+            if ct is None:
+                checks.check(False, "corrstock %s: no contact" % name)
+                continue
+            e, tc = rows[-1, 2] / v0, ct[1] - ct[0]
+            err_e, err_t = e / e_ref - 1, tc / tc_ref - 1
+            print("corrstock hertz N=%d, e_in %g, correction %s: e = %.6f (%.6f, %.1e), t_c = %.6e s (%.6e, %.1e)"
+                  % (n, e_in, corr, e, e_ref, err_e, tc, tc_ref, err_t))
+            checks.check(abs(err_e) < 1e-3 and abs(err_t) < 1e-3,
+                         "corrstock hertz e_in %g, correction %s: e, t_c = %s on %s mass (%.1e, %.1e < 1e-3)"
+                         % (e_in, corr, what, "the sphere" if corr == "none" else "the body", err_e, err_t))
+            if corr == "none":
+                checks.check(abs(tc / tc_closed(M) - 1) > 0.1,
+                             "corrstock: without correction t_c differs from the one-contact value on M (%.3f)"
+                             % (tc / tc_closed(M)))
+
+
+def part_corrsurf(args, checks):
+    """`surface tdem/clump`: a correction without it on the pair style or on a wall/gran fix is an error
+    naming what to add; with correction none it warns and acts as the default surface model (bitwise the
+    same run as without the keyword); a combination that is not compiled is named."""
+    r, rho, dist, e1, t1, v0 = CORR_R, CORR_RHO, CORR_DIST, CORR_E, CORR_T, CORR_V
+    M = 4 * 4.0 / 3.0 * math.pi * r ** 3 * rho
+    kpm, gpm = lsd_rates(e1, t1)
+    dt = t1 / 4000.0
+    steps = int((2e-6 / v0 + 1.6 * t1) / dt)
+    d = T.workdir(args, "tdem_lig_clump_corrsurf")
+
+    def scene(corr, surface):
+        return corr_scene(4, r, dist, rho, v0, M * kpm, M * gpm, dt, steps, corr, surface=surface)
+
+    def expect_error(name, text, needles):
+        res = T.run(args.tdem, text, d, name, check=False)
+        out = res.stdout + res.stderr
+        ok = res.returncode != 0 and all(s in out for s in needles)
+        msg = [l for l in out.splitlines() if "ERROR" in l]
+        checks.check(ok, "corrsurf %s: error names %s%s" % (name, needles, "" if ok else ": " + (msg[0] if msg else out[-300:])))
+
+    for corr in ("count", "local_mass"):
+        expect_error("nopair_" + corr, scene(corr, False),
+                     ["'correction %s'" % corr, "pair style 'gran'", "add 'surface tdem/clump'"])
+    text = scene("overlap", True).replace("tangential no_history surface tdem/clump primitive",
+                                          "tangential no_history primitive")
+    expect_error("nowall", text, ["'correction overlap'", "fix w (wall/gran)", "add 'surface tdem/clump'"])
+    expect_error("notcompiled", scene("count", True).replace("tangential no_history surface", "tangential tdem/haff_werner surface"),
+                 ["not compiled into tdem-liggghts", "surface tdem/clump"])
+    # correction none with the keyword: a warning, and the run of the default surface model
+    res = T.run(args.tdem, scene("none", True), d, "none_surface")
+    out = res.stdout + res.stderr
+    checks.check("WARNING" in out and "surface tdem/clump: no fix tdem/clump with a correction" in out,
+                 "corrsurf: correction none with surface tdem/clump warns")
+    T.run(args.tdem, scene("none", False), d, "none_default")
+    a, b = thermo_rows(d, "none_surface"), thermo_rows(d, "none_default")
+    checks.check(a.shape == b.shape and np.array_equal(a, b) and len(a) > 100,
+                 "corrsurf: correction none: surface tdem/clump = surface default bitwise (%d rows)" % len(a))
+
+
 CORR_NPOUR = 10000
 
 
@@ -835,7 +967,7 @@ def main():
     def extra(p):
         p.add_argument("--part", required=True,
                        choices=["nve", "torquefree", "flatface", "parallel", "restart", "insert", "bad", "examples", "periodic",
-                                "corrflat", "corrcont", "corrlocal", "corrpar"])
+                                "corrflat", "corrcont", "corrlocal", "corrpar", "corrstock", "corrsurf"])
     args = T.parse_args(extra)
     checks = T.Checks()
     globals()["part_" + args.part](args, checks)

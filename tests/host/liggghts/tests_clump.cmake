@@ -2,12 +2,13 @@
 # fix tdem/clump for LIGGGHTS (module 'clump', src/clumps/liggghts; docs/clumps_liggghts.md): included by
 # tests/host/liggghts/CMakeLists.txt. One-sphere clumps = nve/sphere, torque-free asymmetric body,
 # flat-face impacts against the N-contact closed form, -np 2 = -np 1, restart, insertion, bad input;
-# the multiple-contact correction (corr*: count/overlap flat impacts, continuity, local_mass, -np 2 and restart).
+# the multiple-contact correction (corr*: count/overlap flat impacts, continuity, local_mass, -np 2 and restart;
+# corrstock: the stock hertz model scaled through surface tdem/clump; corrsurf: the keyword's errors and warning).
 if(NOT TDEM_LIGGGHTS_CLUMP)
   return()
 endif()
 foreach(_part nve torquefree flatface parallel restart insert bad examples periodic
-              corrflat corrcont corrlocal corrpar)
+              corrflat corrcont corrlocal corrpar corrstock corrsurf)
   add_test(NAME liggghts.clump.${_part}
            COMMAND ${TDEM_LIGGGHTS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py --part ${_part}
                    --tdem $<TARGET_FILE:tdem-liggghts> --stock ${TDEM_LIGGGHTS_STOCK}
