@@ -1,13 +1,16 @@
 #!/bin/sh
 # SPDX-License-Identifier: GPL-2.0-or-later
-# Validation of fix tdem/clump (LAMMPS, issue 6): flat-face impacts against the N-contact closed
-# form, tilted single-contact impacts against rigid-body impact theory, and the same scenes with
-# the stock fix rigid/small. Writes validation/clumps/results/ (table.md, *.png, results.json).
+# Validation of fix tdem/clump (issue 6): flat-face impacts against the N-contact closed form,
+# tilted single-contact impacts against rigid-body impact theory, the same scenes with the stock
+# fix rigid/small (LAMMPS), and the multiple-contact correction (none, count, overlap, local_mass)
+# in LAMMPS and LIGGGHTS. Writes validation/clumps/results/ (table.md, *.png, results.json,
+# correction_lammps.*, liggghts_correction.*).
 #
 #   validation/clumps/run.sh [path/to/tdem-lammps] [--quick]
 #
 # tdem-lammps from the argument, else $TDEM_LAMMPS, else build/bin/tdem-lammps (it must have the
-# clump module, CMake option TDEM_LAMMPS_CLUMP). About 1 min on 2 shared cores (--quick: 30 s).
+# clump module, CMake option TDEM_LAMMPS_CLUMP); tdem-liggghts from $TDEM_LIGGGHTS, else next to
+# tdem-lammps (skipped when missing). About 2 min on 2 shared cores.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
@@ -37,4 +40,10 @@ fi
 mkdir -p "$here/results"
 rm -f "$here/results"/*.png "$here/results/table.md" "$here/results/results.json"
 cd "$here" || exit 2
-/usr/bin/python3 study.py --lammps "$lmp" $quick
+/usr/bin/python3 study.py --lammps "$lmp" --parts flat,tilted,rigid,correction_lammps $quick || exit 1
+lig=${TDEM_LIGGGHTS:-$(dirname "$lmp")/tdem-liggghts}
+if [ -x "$lig" ]; then
+  /usr/bin/python3 study.py --liggghts "$lig" || exit 1
+else
+  echo "run.sh: no tdem-liggghts at '$lig': the LIGGGHTS correction section is skipped" >&2
+fi

@@ -529,7 +529,8 @@ def write_results(flat, tilt, conv, rig, quick):
         for r in flat:
             md.append("| %d | %d | %.1f | %.6f | %.6f | %.1e | %.5e | %.5e | %.1e |" % (
                 r["n"], r["spc"], r["steps_in_contact"], r["e"], r["e_ref"], r["e_rel"], r["tc"], r["tc_ref"], r["tc_rel"]))
-        md += ["", "With the multiple-contact correction (core only, not yet in the host styles; "
+        md += ["", "With the multiple-contact correction in the core (the host styles' numbers: "
+               "`correction_lammps.md`, `liggghts_correction.md`; "
                "`tests/unit/test_clumps.cpp`, `ClumpMultiContact.FlatFaceDropsMatchNContactClosedFormAndCorrection`, "
                "r = 1 mm, spacing 1.8 mm, dt = t_c/5000), printed by the unit test:", "", "```"]
         ut = os.path.join(HERE, "unit_clumps.txt")
