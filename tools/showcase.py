@@ -228,7 +228,7 @@ def settle(tmp):
     return res
 
 
-def clumps(n_per_kind=1000, steps=12000):
+def clumps(n_per_kind=1000, steps=24000):
     """Pour 2 x n_per_kind clumps; returns (thermo first, thermo last, seconds, clumps, spheres,
     largest change of an intra-clump distance, highest sphere centre)."""
     w = os.path.join(OUT, "clumps")
@@ -244,7 +244,8 @@ def clumps(n_per_kind=1000, steps=12000):
         f.write(text)
     t0 = time.time()
     r = subprocess.run(MPIRUN + [LIG, "-in", "in.clumps", "-log", "log.clumps", "-var", "n", str(n_per_kind),
-                                 "-var", "steps", str(steps)], cwd=w, capture_output=True, text=True)
+                                 "-var", "steps", str(steps), "-var", "zhi", "0.36"], cwd=w, capture_output=True,
+                       text=True, errors="replace")
     secs = time.time() - t0
     if r.returncode != 0:
         sys.stderr.write(r.stdout[-3000:] + r.stderr[-3000:])
