@@ -323,6 +323,8 @@ def main():
         print("grate scenes: %.0f s; VTK files (bars and particles) and plots in %s" % (time.time() - t0, grate))
         print("\n== 4. Rigid clumps poured into a box, mpirun -np 2 (input_scripts/liggghts/clumps_pour.in) ==")
         first, last, secs, nbody, nsph, worst, top = clumps()
+        if not worst < 1e-12:
+            raise SystemExit("showcase: a clump did not stay rigid (a distance changed by %g m)" % worst)
         print("%d clumps (tetra-sphere and 3-sphere rods, %d spheres), %.0f s\n"
               "  thermo (step atoms KE_tetra KE_rods n_tetra n_rods) first: %s\n"
               "                                                        last:  %s\n"
