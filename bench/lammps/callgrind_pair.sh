@@ -29,7 +29,7 @@ src=${TDEM_LAMMPS_SOURCE:-$( (ls -d /var/cache/tdem/lammps-* /opt/tdem-deps/lamm
 bed=$build/bench_cache/bed$natoms.data
 if [ ! -f "$bed" ]; then
   echo "settling the bed once: bench/perf.py --engines lammps --scenes bed --natoms $natoms" >&2
-  /usr/bin/python3 "$here/bench/perf.py" --build "$build" --engines lammps --scenes bed \
+  /usr/bin/python3 "$here/bench/perf.py" --build "$build" --engines lammps --scenes bed --ranks 1 --no-control \
     --natoms "$natoms" --steps 1 --warm 1 --repeats 1 --out "" > /dev/null
 fi
 work=$(mktemp -d /tmp/tdem_cgpair.XXXXXX)
