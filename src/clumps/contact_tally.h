@@ -6,8 +6,8 @@
 // contact that has a clump on at least one side (a, b: 64-bit ids of the two sides chosen by the
 // host, e.g. the body index for a clump sphere, -(tag+1) for a free sphere, a wall id for a wall;
 // the tally only compares them). On several ranks it packs its entries, gathers the other ranks'
-// entries and merges them (merge_packed), so every rank sees the global N_c and sum of overlaps
-// of every body pair it touches. In the force pass, factor(k, xi) gives the factor s of the k-th
+// entries and merges them (merge_packed; contact_tally_mpi.h does it with MPI_Allgatherv), so
+// every rank sees the global N_c and sum of overlaps of every body pair it touches. In the force pass, factor(k, xi) gives the factor s of the k-th
 // added contact (same order), or pair_factor(find(a, b), xi) by the sides of the contact.
 //
 // The overlap sum is kept in fixed point (128-bit integer units of quantum = length_scale * 2^-80,
@@ -50,14 +50,20 @@ class ContactTally {
     slots_.clear();
   }
 
-  // one touching contact between sides a and b (order irrelevant) with overlap xi >= 0
-  int add(std::int64_t a, std::int64_t b, double xi) {
+  // one touching contact between sides a and b (order irrelevant) with overlap xi >= 0.
+  // counted = false: a contact that is counted elsewhere (newton off: the copy of a pair with a
+  // ghost partner that the other rank, or the other image, counts): it keeps its place in the
+  // contact order and makes the pair known here, so merge_packed brings the other ranks' counts
+  // to it, but adds nothing to it.
+  int add(std::int64_t a, std::int64_t b, double xi, bool counted = true) {
     if (a > b) std::swap(a, b);
     auto ins = index_.try_emplace(Key{a, b}, static_cast<int>(entries_.size()));
     if (ins.second) entries_.push_back(Entry{a, b, 0, 0});
-    Entry& e = entries_[ins.first->second];
-    e.n += 1;
-    e.qsum += to_fixed(xi);
+    if (counted) {
+      Entry& e = entries_[ins.first->second];
+      e.n += 1;
+      e.qsum += to_fixed(xi);
+    }
     slots_.push_back(ins.first->second);
     return ins.first->second;
   }

@@ -814,3 +814,29 @@ TEST(ClumpContactTally, LookupByTheSidesGivesTheFactorOfTheContactOrder) {
   EXPECT_EQ(t.pair_factor(Correction::count, t.find(-9, 2), 2e-6), 1.0);
   EXPECT_EQ(t.pair_factor(Correction::count, -1, 2e-6), 1.0);
 }
+
+TEST(ClumpContactTally, UncountedCopyKeepsItsPlaceAndReceivesTheOtherRanksCount) {
+  // newton off: rank 0 counts a contact of pair (1, 2) that rank 1 also sees (uncounted there);
+  // rank 1 counts another contact of the same pair
+  ContactTally r0(1e-3), r1(1e-3);
+  r0.add(1, 2, 2e-6);
+  r1.add(2, 1, 2e-6, false);  // rank 0's contact, seen here too
+  r1.add(1, 2, 1e-6);
+  EXPECT_EQ(r1.contacts(), 2u);  // both keep their place in the contact order
+  EXPECT_EQ(r1.count_of(0), 1);  // before the merge: only its own contact
+  std::vector<std::int64_t> b0, b1;
+  r0.pack(b0);
+  r1.pack(b1);
+  r0.merge_packed(b1.data(), b1.size() / ContactTally::pack_width);
+  r1.merge_packed(b0.data(), b0.size() / ContactTally::pack_width);
+  for (const ContactTally* r : {&r0, &r1}) {
+    EXPECT_EQ(r->count_of(0), 2);
+    EXPECT_NEAR(r->overlap_sum_of(0), 3e-6, 1e-20);
+  }
+  EXPECT_EQ(r1.factor(Correction::overlap_share, 0, 2e-6), r0.factor(Correction::overlap_share, 0, 2e-6));
+  // a pair seen only as an uncounted copy has no count of its own
+  ContactTally t(1e-3);
+  t.add(5, 6, 1e-6, false);
+  EXPECT_EQ(t.count_of(0), 0);
+  EXPECT_EQ(t.pair_factor(Correction::count, t.find(5, 6), 1e-6), 1.0);
+}

@@ -6,13 +6,12 @@
 //   find_clump_correction   the clump fix and its correction (none when there is no clump fix)
 //   ClumpView               per-step pointers: body index per atom, body mass, com, inverse
 //                           inertia (space frame); inverse local mass of one side
-//   sync_tally              global contact counts / overlap sums of the ContactTally: removes
-//                           this rank's doubly seen contacts (newton off), then, on several ranks,
-//                           MPI_Allgatherv of the packed int64 entries and merge of the other
-//                           ranks' blocks (exact fixed-point sums: independent of the rank split)
+// The global contact counts and overlap sums come from clumps/contact_tally_mpi.h
+// (merge_over_ranks; exact fixed-point sums, independent of the rank split).
 #pragma once
 
 #include "clumps/contact_tally.h"
+#include "clumps/contact_tally_mpi.h"
 #include "clumps/multi_contact.h"
 
 #include "domain.h"
@@ -84,51 +83,5 @@ struct ClumpView {
     return 1.0 / mass[b] + q;
   }
 };
-
-// Scratch buffers of sync_tally.
-struct TallyBuffers {
-  std::vector<std::int64_t> own, all;
-  std::vector<int> counts, displs;
-};
-
-// counted: every contact of this rank; twice_seen: those of them another rank counts too (newton
-// off, j a ghost); afterwards counted holds the global counts and overlap sums of its pairs.
-inline void sync_tally(tdem::clumps::ContactTally &counted, const tdem::clumps::ContactTally &twice_seen,
-                       MPI_Comm world, TallyBuffers &buf) {
-  constexpr int w = tdem::clumps::ContactTally::pack_width;
-  if (twice_seen.contacts() > 0) {
-    // subtract them exactly: entries with negated count and negated 128-bit overlap sum
-    twice_seen.pack(buf.own);
-    for (std::size_t k = 0; k < twice_seen.pairs(); k++) {
-      std::int64_t *p = buf.own.data() + k * w;
-      p[2] = -p[2];
-      __extension__ typedef __int128 Fixed;
-      Fixed v = (Fixed) (((unsigned __int128) (std::uint64_t) p[3] << 64) | (std::uint64_t) p[4]);
-      v = -v;
-      p[3] = (std::int64_t) (v >> 64);
-      p[4] = (std::int64_t) (std::uint64_t) v;
-    }
-    counted.merge_packed(buf.own.data(), twice_seen.pairs());
-  }
-  int nprocs = 1, me = 0;
-  MPI_Comm_size(world, &nprocs);
-  if (nprocs == 1) return;
-  MPI_Comm_rank(world, &me);
-  counted.pack(buf.own);
-  const int n = (int) buf.own.size();
-  buf.counts.resize(nprocs);
-  buf.displs.resize(nprocs);
-  MPI_Allgather(&n, 1, MPI_INT, buf.counts.data(), 1, MPI_INT, world);
-  int total = 0;
-  for (int r = 0; r < nprocs; r++) {
-    buf.displs[r] = total;
-    total += buf.counts[r];
-  }
-  buf.all.resize(total > 0 ? total : 1);
-  MPI_Allgatherv(buf.own.data(), n, MPI_INT64_T, buf.all.data(), buf.counts.data(), buf.displs.data(), MPI_INT64_T,
-                 world);
-  for (int r = 0; r < nprocs; r++)
-    if (r != me) counted.merge_packed(buf.all.data() + buf.displs[r], (std::size_t) (buf.counts[r] / w));
-}
 
 }  // namespace tdem_lammps

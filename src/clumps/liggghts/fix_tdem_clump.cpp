@@ -799,7 +799,6 @@ void FixTdemClump::pre_force(int) {
 // primitive wall loop (resolveContact <= 0).
 void FixTdemClump::build_tally() {
   tally_.clear();
-  skipped_.clear();
   const int nlocal = atom->nlocal;
   double** x = atom->x;
   const double* radius = atom->radius;
@@ -824,9 +823,9 @@ void FixTdemClump::build_tally() {
         const std::int64_t a = side(i), b = side(j);
         if (a == b) continue;
         // newton off: a pair with a ghost partner is in the lists of both owners' ranks (or twice
-        // on one rank across a periodic boundary): counted where tag[i] < tag[j]
-        if (newton || j < nlocal || tag[i] < tag[j]) tally_.add(a, b, radsum - std::sqrt(rsq));
-        else skipped_.push_back({std::min(a, b), std::max(a, b)});
+        // on one rank across a periodic boundary): counted where tag[i] <= tag[j] (equal: two
+        // images of one sphere, two contacts); the other copy only makes the pair known here
+        tally_.add(a, b, radsum - std::sqrt(rsq), newton || j < nlocal || tag[i] <= tag[j]);
       }
     }
   }
@@ -842,32 +841,7 @@ void FixTdemClump::build_tally() {
       if (d <= 0.0) tally_.add(bodyidx_[i], wall_sides_[w].second, -d);
     }
   }
-  const int np = comm->nprocs;
-  if (np > 1) tally_.pack(packbuf_);
-  // pairs seen here only through contacts counted elsewhere: present with no count of their own
-  // (an entry with n = 1 from add, then n - 1 through a merged block)
-  compbuf_.clear();
-  for (const auto& p : skipped_) {
-    if (tally_.find(p.first, p.second) >= 0) continue;
-    tally_.add(p.first, p.second, 0.0);
-    const std::int64_t row[cl::ContactTally::pack_width] = {p.first, p.second, -1, 0, 0};
-    compbuf_.insert(compbuf_.end(), row, row + cl::ContactTally::pack_width);
-  }
-  if (!compbuf_.empty()) tally_.merge_packed(compbuf_.data(), compbuf_.size() / cl::ContactTally::pack_width);
-  if (np == 1) return;
-  int nme = static_cast<int>(packbuf_.size());
-  std::vector<int> counts(np), displs(np);
-  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-  int ntot = 0;
-  for (int p = 0; p < np; p++) {
-    displs[p] = ntot;
-    ntot += counts[p];
-  }
-  allbuf_.resize(std::max(ntot, 1));
-  MPI_Allgatherv(packbuf_.data(), nme, MPI_INT64_T, allbuf_.data(), counts.data(), displs.data(), MPI_INT64_T, world);
-  for (int p = 0; p < np; p++)
-    if (p != comm->me && counts[p] > 0)
-      tally_.merge_packed(allbuf_.data() + displs[p], counts[p] / cl::ContactTally::pack_width);
+  cl::merge_over_ranks(tally_, world, exchange_);
 }
 
 // 1/M + (r x n).I^-1 (r x n) of the body of atom a (r: sphere centre - com; the contact point lies

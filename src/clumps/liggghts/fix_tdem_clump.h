@@ -36,6 +36,7 @@
 #include "fix.h"
 
 #include "clumps/contact_tally.h"
+#include "clumps/contact_tally_mpi.h"
 #include "clumps/multi_contact.h"
 #include "clumps/rigid_body.h"
 #include "tdem_liggghts_clump_link.h"
@@ -102,8 +103,7 @@ class FixTdemClump : public Fix, public tdem::liggghts::clump_link::Correction {
   class PairGran* pair_gran_;
   std::vector<class FixWallGran*> walls_;                      // primitive wall/gran fixes
   std::vector<std::pair<const void*, std::int64_t>> wall_sides_;  // contact-model owner -> side id
-  std::vector<std::pair<std::int64_t, std::int64_t>> skipped_;    // pairs counted on another rank
-  std::vector<std::int64_t> packbuf_, allbuf_, compbuf_;
+  tdem::clumps::TallyExchange exchange_;  // scratch of the MPI merge of tally_
   void setup_correction();
   void build_tally();
   double inverse_side_mass(int a, const double* n) const;

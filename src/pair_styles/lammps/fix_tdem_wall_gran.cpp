@@ -287,7 +287,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
         if (rsq > radius[i] * radius[i]) continue;
         tally.add((std::int64_t) cv.body[i], side, radius[i] - sqrt(rsq));
       }
-      tdem_lammps::sync_tally(tally, tally_none, world, tally_buf);
+      tdem::clumps::merge_over_ranks(tally, world, tally_buf);
     }
   }
 

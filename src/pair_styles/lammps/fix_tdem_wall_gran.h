@@ -77,8 +77,8 @@ class FixTDEMWallGran : public Fix {
   // cylinder), scratch for the MPI merge
   class Fix *fix_clump;
   int corr_mode;
-  tdem::clumps::ContactTally tally, tally_none;
-  tdem_lammps::TallyBuffers tally_buf;
+  tdem::clumps::ContactTally tally;
+  tdem::clumps::TallyExchange tally_buf;
 };
 
 }  // namespace LAMMPS_NS

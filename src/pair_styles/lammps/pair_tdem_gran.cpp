@@ -222,7 +222,6 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
     cv.fetch(fix_clump, cmode == tdem::clumps::Correction::local_mass);
     if (share) {
       tally.clear();
-      tally_twice.clear();
       for (int ii = 0; ii < inum; ii++) {
         const int i = ilist[ii];
         const int *jl = firstneigh[i];
@@ -236,13 +235,12 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
           const double xi = rs - sqrt(rsq);
           const std::int64_t a = cv.body[i] >= 0 ? (std::int64_t) cv.body[i] : -(std::int64_t) tag[i] - 1;
           const std::int64_t b = cv.body[j] >= 0 ? (std::int64_t) cv.body[j] : -(std::int64_t) tag[j] - 1;
-          tally.add(a, b, xi);
           // newton off: a pair with a ghost j is also in the list of the rank (or image) owning
-          // j; count it where tag[i] < tag[j]
-          if (!newton_pair && j >= nlocal && tag[i] > tag[j]) tally_twice.add(a, b, xi);
+          // j; it is counted where tag[i] <= tag[j] (equal: two images of one sphere, two contacts)
+          tally.add(a, b, xi, newton_pair || j < nlocal || tag[i] <= tag[j]);
         }
       }
-      tdem_lammps::sync_tally(tally, tally_twice, world, tally_buf);
+      tdem::clumps::merge_over_ranks(tally, world, tally_buf);
     }
   }
 
@@ -545,7 +543,6 @@ void PairTDEMGran::init_style()
     double dmax = 0.0;
     for (int i = 1; i <= atom->ntypes; i++) dmax = MAX(dmax, 2.0 * MAX(maxrad_dynamic[i], maxrad_frozen[i]));
     tally.set_length_scale(dmax > 0.0 ? dmax : 1.0);
-    tally_twice.set_length_scale(dmax > 0.0 ? dmax : 1.0);
   }
 
   const int ifix = modify->find_fix(id_history);

@@ -97,8 +97,8 @@ class PairTDEMGran : public Pair {
   // overlap) with the contacts another rank counts too (newton off), scratch for the MPI merge
   class Fix *fix_clump;
   int corr_mode;
-  tdem::clumps::ContactTally tally, tally_twice;
-  tdem_lammps::TallyBuffers tally_buf;
+  tdem::clumps::ContactTally tally;
+  tdem::clumps::TallyExchange tally_buf;
 
   void allocate();
   tdem_lammps::LawCoeffs &coeffs(int i, int j) { return law[i * (atom_ntypes + 1) + j]; }
