@@ -27,6 +27,8 @@ import time
 import numpy as np
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(HERE)), "tests", "host"))
+from clump_ref import hertz_wall_ode  # noqa: E402  (the RK4 reference of the LIGGGHTS hertz test)
 RES = os.path.join(HERE, "results")
 
 E, TC, R, RHO, V0 = 0.8, 1e-4, 0.002, 2500.0, 1.0
@@ -1005,35 +1007,6 @@ def lig_local(exe):
     return rows
 
 
-def lig_hertz_ode(E, nu, r, e_in, M, meff, v0):
-    """one LIGGGHTS hertz contact (sphere r on a wall of the same material, damping on m* = meff) moving a
-    mass M at approach speed v0, RK4: (e, t_c). F = 4/3 Y* sqrt(r) xi^1.5 + 2 sqrt(5/6) |beta|
-    sqrt(2 Y* sqrt(r xi) meff) dxi/dt, Y* = E / (2 (1 - nu^2)), beta = ln e / sqrt(ln^2 e + pi^2)."""
-    Y = E / (2.0 * (1.0 - nu * nu))
-    lne = math.log(e_in)
-    beta = -lne / math.sqrt(lne * lne + math.pi ** 2)
-    K = 4.0 / 3.0 * Y * math.sqrt(r)
-
-    def acc(x, v):
-        xp = max(x, 0.0)
-        return -(K * xp ** 1.5 + 2.0 * math.sqrt(5.0 / 6.0) * beta * math.sqrt(2.0 * Y * math.sqrt(r * xp) * meff) * v) / M
-
-    xmax = (5.0 * M * v0 * v0 / (4.0 * K)) ** 0.4
-    h = 2.0 * xmax / v0 / 20000.0
-    x, v, t = 0.0, v0, 0.0
-    while True:
-        k1x, k1v = v, acc(x, v)
-        k2x, k2v = v + 0.5 * h * k1v, acc(x + 0.5 * h * k1x, v + 0.5 * h * k1v)
-        k3x, k3v = v + 0.5 * h * k2v, acc(x + 0.5 * h * k2x, v + 0.5 * h * k2v)
-        k4x, k4v = v + h * k3v, acc(x + h * k3x, v + h * k3v)
-        xn = x + h / 6.0 * (k1x + 2 * k2x + 2 * k3x + k4x)
-        vn = v + h / 6.0 * (k1v + 2 * k2v + 2 * k3v + k4v)
-        if xn < 0.0 and t > 0.0:
-            f = x / (x - xn)
-            return -(v + f * (vn - v)) / v0, t + f * h
-        x, v, t = xn, vn, t + h
-
-
 def lig_stock(exe):
     """stock `model hertz tangential history` (+ surface tdem/clump), flat rods on the wall, e_in = 0.8."""
     E, nu, e_in = 5e7, 0.3, 0.8
@@ -1041,11 +1014,11 @@ def lig_stock(exe):
     rows = []
     for n in (1, 2, 4, 8):
         M = n * m
-        tc1 = lig_hertz_ode(E, nu, LIG_R, 1.0 - 1e-12, M, m, LIG_V)[1]
+        tc1 = hertz_wall_ode(E, nu, LIG_R, 1.0 - 1e-12, M, m, LIG_V)[1]
         dt = tc1 / 4000.0
         for corr in ("none", "count", "overlap"):
             mass = m if corr == "none" else M
-            e_ref, t_ref = lig_hertz_ode(E, nu, LIG_R, e_in, mass, m, LIG_V)
+            e_ref, t_ref = hertz_wall_ode(E, nu, LIG_R, e_in, mass, m, LIG_V)
             fr = lig_run(exe, lig_scene(n, LIG_DIST, 0, 0, dt, int((2e-6 + 1.3 * tc1) / dt), corr, hertz=(E, nu, e_in)))
             t = np.array([s for s, _ in fr]) * dt
             xi = LIG_R - np.array([a[:, 1].min() for _, a in fr])
