@@ -53,6 +53,14 @@ void register_combo() {
   note_compiled(hash);
 }
 
+// The same combination with the surface model tdem/clump (the multiple-contact correction of fix
+// tdem/clump); the translation unit includes surface_model_tdem_clump.h.
+template <int N, int T>
+void register_clump_combo() {
+  register_combo<N, T, LIGGGHTS::ContactModels::COHESION_OFF, LIGGGHTS::ContactModels::ROLLING_OFF,
+                 LIGGGHTS::ContactModels::TDEM_CLUMP_SURFACE>();
+}
+
 // One function per translation unit (they compile in parallel).
 void register_lsd_a();
 void register_lsd_b();
