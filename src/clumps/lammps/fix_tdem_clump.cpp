@@ -692,19 +692,8 @@ void FixTDEMClump::map_atoms()
     memory->create(bodyidx, nmax_idx, "tdem/clump:bodyidx");
     memory->create(sphidx, nmax_idx, "tdem/clump:sphidx");
   }
-  int nmine = 0;
-  for (int i = 0; i < nall; i++) {
-    auto it = slot.find(atom->tag[i]);
-    if (it == slot.end()) {
-      bodyidx[i] = sphidx[i] = -1;
-      continue;
-    }
-    bodyidx[i] = it->second / nsph;
-    sphidx[i] = it->second % nsph;
-    atom->radius[i] = tmpl.body[sphidx[i]].r;
-    atom->rmass[i] = sphere_mass[sphidx[i]];
-    if (i < atom->nlocal) nmine++;
-  }
+  const int nmine = tdem::clumps::map_clump_atoms(nall, atom->nlocal, atom->tag, slot, nsph, tmpl, sphere_mass,
+                                                  bodyidx, sphidx, atom->radius, atom->rmass);
   bigint mine = nmine, all = 0;
   MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
   if (all != (bigint) st.size() * nsph)

@@ -531,19 +531,8 @@ void FixTdemClump::map_atoms() {
     memory->create(bodyidx_, nmax_idx_, "tdem/clump:bodyidx");
     memory->create(sphidx_, nmax_idx_, "tdem/clump:sphidx");
   }
-  int nmine = 0;
-  for (int i = 0; i < nall; i++) {
-    auto it = slot_.find(atom->tag[i]);
-    if (it == slot_.end()) {
-      bodyidx_[i] = sphidx_[i] = -1;
-      continue;
-    }
-    bodyidx_[i] = it->second / nsph_;
-    sphidx_[i] = it->second % nsph_;
-    atom->radius[i] = tmpl_.body[sphidx_[i]].r;
-    atom->rmass[i] = sphere_mass_[sphidx_[i]];
-    if (i < atom->nlocal) nmine++;
-  }
+  int nmine = tdem::clumps::map_clump_atoms(nall, atom->nlocal, atom->tag, slot_, nsph_, tmpl_, sphere_mass_,
+                                            bodyidx_, sphidx_, atom->radius, atom->rmass);
   int all = 0;
   MPI_Allreduce(&nmine, &all, 1, MPI_INT, MPI_SUM, world);
   if (all != static_cast<int>(st_.size()) * nsph_)
