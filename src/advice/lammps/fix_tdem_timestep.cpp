@@ -140,7 +140,7 @@ FixTDEMTimestep::FixTDEMTimestep(LAMMPS *lmp, int narg, char **arg) :
   } catch (const std::exception &e) {
     error->all(FLERR, fmt::format("fix {} tdem/timestep: {}", id, e.what()));
   }
-  if (!atom->sphere_flag)
+  if (!atom->radius_flag || !atom->rmass_flag)
     error->all(FLERR, fmt::format("fix {} tdem/timestep requires atom style sphere (radius and rmass)", id));
   vector_flag = 1;
   size_vector = 3;

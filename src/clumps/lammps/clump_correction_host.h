@@ -15,6 +15,7 @@
 #include "clumps/multi_contact.h"
 
 #include "domain.h"
+#include "lammps_compat.h"
 #include "lammps.h"
 #include "error.h"
 #include "fix.h"
@@ -75,7 +76,7 @@ struct ClumpView {
   // 1/M + (r x n).I^-1 (r x n) of body b, r = contact point - com (minimum image), n unit normal
   double inverse_local_mass(LAMMPS_NS::Domain *domain, int b, const double *xc, const double *n) const {
     double r[3] = {xc[0] - com[3 * b], xc[1] - com[3 * b + 1], xc[2] - com[3 * b + 2]};
-    domain->minimum_image(r[0], r[1], r[2]);
+    tdem_lammps::compat::minimum_image(domain, r[0], r[1], r[2]);
     const double c[3] = {r[1] * n[2] - r[2] * n[1], r[2] * n[0] - r[0] * n[2], r[0] * n[1] - r[1] * n[0]};
     const double *I = inv_i + 9 * b;
     double q = 0.0;

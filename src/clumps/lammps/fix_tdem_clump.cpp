@@ -12,6 +12,7 @@
 #include "error.h"
 #include "force.h"
 #include "group.h"
+#include "lammps_compat.h"
 #include "memory.h"
 #include "modify.h"
 #include "neighbor.h"
@@ -134,7 +135,7 @@ FixTDEMClump::FixTDEMClump(LAMMPS *lmp, int narg, char **arg) :
 {
   where = std::string("fix ") + id + " tdem/clump";
   insert_vel[0] = insert_vel[1] = insert_vel[2] = 0.0;
-  if (!atom->sphere_flag || !atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, where + " requires atom_style sphere (per-atom radius, rmass, omega, torque); the current "
                               "atom style '" + std::string(atom->atom_style) + "' lacks them");
   if (!atom->molecule_flag)
@@ -377,9 +378,8 @@ void FixTDEMClump::post_constructor()
 
 void FixTDEMClump::insert_clumps()
 {
-  const int iregion = domain->find_region(insert_region);
-  if (iregion < 0) error->all(FLERR, where + ": insert region '" + insert_region + "' does not exist");
-  Region *region = domain->regions[iregion];
+  Region *region = tdem_lammps::compat::region_by_id(domain, insert_region);
+  if (!region) error->all(FLERR, where + ": insert region '" + insert_region + "' does not exist");
   if (!region->bboxflag)
     error->all(FLERR, where + ": insert region '" + insert_region + "' has no bounding box (use a bounded region)");
   region->prematch();
@@ -415,7 +415,7 @@ void FixTDEMClump::insert_clumps()
 
   auto overlap_dist = [&](const double *a, const double *b) {
     double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-    domain->minimum_image(dx, dy, dz);
+    tdem_lammps::compat::minimum_image(domain, dx, dy, dz);
     return std::sqrt(dx * dx + dy * dy + dz * dz);
   };
   auto inside = [&](const Vec3 &p, double r) {

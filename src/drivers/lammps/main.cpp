@@ -11,18 +11,19 @@
 // and every plugin loaded with `plugin load` are registered again. If interposition is not
 // available the styles are still registered once after construction.
 
-#include "accelerator_kokkos.h"
 #include "command.h"
 #include "comm.h"
 #include "error.h"
+#include "exceptions.h"
 #include "force.h"
 #include "input.h"
 #include "lammps.h"
 #include "lammpsplugin.h"
-#include "lmppython.h"
+#include "library.h"
 #include "modify.h"
 #include "version.h"
 
+#include "lammps_compat.h"
 #include "tdem_lammps_styles.h"
 
 #include <cstdio>
@@ -181,41 +182,46 @@ void LAMMPS::post_create()
 }  // namespace LAMMPS_NS
 
 // ------------------------------------------------------------------ main, as LAMMPS main.cpp
+namespace {
+void finalize_libraries()
+{
+  lammps_kokkos_finalize();
+  lammps_python_finalize();
+}
+}  // namespace
+
 int main(int argc, char **argv)
 {
   MPI_Init(&argc, &argv);
   MPI_Comm lammps_comm = MPI_COMM_WORLD;
 
-#ifdef LAMMPS_EXCEPTIONS
+  // An ERROR throws LAMMPSException where liblammps was built with exceptions (always since
+  // LAMMPS 2023); where it was not, Error::all ends the run itself and nothing is thrown.
   try {
-#endif
-    try {
-      LAMMPS *lammps = new LAMMPS(argc, argv, lammps_comm);
-      if (!post_create_hooked) add_tdem(lammps);  // interposition not active
-      lammps->input->file();
-      delete lammps;
-    } catch (fmt::format_error &fe) {
-      fprintf(stderr, "fmt::format_error: %s\n", fe.what());
-      KokkosLMP::finalize();
-      Python::finalize();
-      MPI_Abort(MPI_COMM_WORLD, 1);
-      exit(1);
-    }
-#ifdef LAMMPS_EXCEPTIONS
+    LAMMPS *lammps = new LAMMPS(argc, argv, lammps_comm);
+    if (!post_create_hooked) add_tdem(lammps);  // interposition not active
+    lammps->input->file();
+    delete lammps;
   } catch (LAMMPSAbortException &ae) {
-    KokkosLMP::finalize();
-    Python::finalize();
-    MPI_Abort(ae.universe, 1);
-  } catch (LAMMPSException &e) {
-    KokkosLMP::finalize();
-    Python::finalize();
+    finalize_libraries();
+    MPI_Abort(tdem_lammps::compat::abort_universe(ae), 1);
+  } catch (LAMMPSException &) {
+    finalize_libraries();
     MPI_Barrier(lammps_comm);
     MPI_Finalize();
     exit(1);
+  } catch (fmt::format_error &fe) {
+    fprintf(stderr, "fmt::format_error: %s\n", fe.what());
+    finalize_libraries();
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    exit(1);
+  } catch (std::exception &e) {
+    fprintf(stderr, "Exception: %s\n", e.what());
+    finalize_libraries();
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    exit(1);
   }
-#endif
-  KokkosLMP::finalize();
-  Python::finalize();
+  finalize_libraries();
   MPI_Barrier(lammps_comm);
   MPI_Finalize();
   return 0;

@@ -4,7 +4,14 @@
 // Global array (N + 1) x 5: per bin (last row: all bins) count, p_x, p_y, p_z, P' of the current step;
 // global scalar: P' of all bins. Neighbours are all atoms of the group; `exclude` leaves a group out
 // of the statistics (it still counts as neighbour).
-#pragma once
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(tdem/mixing/velocity,ComputeTDEMMixingVelocity);
+// clang-format on
+#else
+
+#ifndef TDEM_LMP_COMPUTE_TDEM_MIXING_VELOCITY_H
+#define TDEM_LMP_COMPUTE_TDEM_MIXING_VELOCITY_H
 
 #include "compute.h"
 #include "grate/mixing_host.h"
@@ -27,3 +34,6 @@ class ComputeTDEMMixingVelocity : public Compute {
 };
 
 }  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -55,7 +55,8 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
     Fix(lmp, narg, arg), slots(nullptr), fix_rigid(nullptr), mass_rigid(nullptr)
 {
   where = std::string("fix ") + id + " tdem/grate";
-  if (!atom->sphere_flag) error->all(FLERR, where + " requires atom_style sphere");
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
+    error->all(FLERR, where + " requires atom_style sphere (per-atom radius, rmass, omega)");
 
   create_attribute = 1;
   restart_peratom = 1;

@@ -17,6 +17,12 @@
 // const tdem::grate::Grate *, extract("tdem_grate_time") -> double * (grate time of the last
 // force evaluation), both dim 0.
 
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(tdem/grate,FixTDEMGrate);
+// clang-format on
+#else
+
 #ifndef TDEM_LMP_FIX_TDEM_GRATE_H
 #define TDEM_LMP_FIX_TDEM_GRATE_H
 
@@ -103,4 +109,5 @@ class FixTDEMGrate : public Fix {
 
 }  // namespace LAMMPS_NS
 
+#endif
 #endif

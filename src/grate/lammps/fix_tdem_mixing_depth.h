@@ -5,7 +5,14 @@
 // accumulated along the trajectories (per-atom state that migrates and goes to restarts) and per bin.
 // Per-atom array: D now, Dbar, sigma_D, Q'. Global array (NB + 1) x 6 (last row: all bins): count,
 // mean D, mean sigma_D, Q'_bin, sigma of the D samples, samples. Scalar: Q' of all bins.
-#pragma once
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(tdem/mixing/depth,FixTDEMMixingDepth);
+// clang-format on
+#else
+
+#ifndef TDEM_LMP_FIX_TDEM_MIXING_DEPTH_H
+#define TDEM_LMP_FIX_TDEM_MIXING_DEPTH_H
 
 #include "fix.h"
 #include "grate/mixing_host.h"
@@ -59,3 +66,6 @@ class FixTDEMMixingDepth : public Fix {
 };
 
 }  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -35,7 +35,7 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS *lmp, int narg, char **arg) :
     stride(1), code(0), nmax_rows(0), store(nullptr), dt_hist(0.0), dt_prev(0.0), pending(1), restart_mismatch(0)
 {
   const std::string where = std::string("fix ") + id + " tdem/integrate";
-  if (!atom->sphere_flag || !atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
       !atom->torque_flag)
     error->all(FLERR, where + " requires atom_style sphere (per-atom radius, rmass, omega, torque); "
                               "the current atom style '" + std::string(atom->atom_style) +

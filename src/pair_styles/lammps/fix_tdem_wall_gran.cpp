@@ -42,7 +42,8 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
     corr_mode(0)
 {
   const std::string where = std::string("fix ") + id + " tdem/wall/gran";
-  if (!atom->sphere_flag) error->all(FLERR, where + " requires atom_style sphere");
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
+    error->all(FLERR, where + " requires atom_style sphere (per-atom radius, rmass, omega)");
 
   create_attribute = 1;
   restart_peratom = 1;

@@ -151,7 +151,7 @@ void PairTDEMGran::compute(int eflag, int vflag)
     const int nlocal = atom->nlocal;
     for (int i = 0; i < nlocal; i++)
       mass_rigid[i] = (body[i] >= 0) ? mass_body[body[i]] : 0.0;
-    comm->forward_comm_pair(this);
+    tdem_lammps::compat::forward_comm(comm, this);
   }
 
   // the multiple-contact correction of fix tdem/clump: a separate instantiation
@@ -448,13 +448,7 @@ void PairTDEMGran::init_style()
     error->all(FLERR, "pair tdem/gran requires ghost atoms store velocity: use comm_modify vel yes");
 
   // a size neighbour list with history
-#if defined(TDEM_LAMMPS_ADD_REQUEST)
-  neighbor->add_request(this, NeighConst::REQ_SIZE | NeighConst::REQ_HISTORY);
-#else
-  int irequest = neighbor->request(this, instance_me);
-  neighbor->requests[irequest]->size = 1;
-  neighbor->requests[irequest]->history = 1;
-#endif
+  tdem_lammps::compat::request_size_list(neighbor, this, instance_me, true);
 
   dt = update->dt;
 
@@ -502,8 +496,8 @@ void PairTDEMGran::init_style()
   }
 
   // fix freeze: frozen particles have infinite mass
-  const int ifreeze = modify->find_fix_by_style("^freeze");
-  freeze_group_bit = (ifreeze < 0) ? 0 : modify->fix[ifreeze]->groupbit;
+  const Fix *freeze = tdem_lammps::compat::first_fix_by_style(modify, "^freeze");
+  freeze_group_bit = freeze ? freeze->groupbit : 0;
 
   // fix rigid: use body masses (first rigid fix, as the LAMMPS granular styles)
   fix_rigid = nullptr;
@@ -517,14 +511,14 @@ void PairTDEMGran::init_style()
   if (!fix_clump) corr_mode = 0;
 
   // largest radii per type, including particles fix pour / fix deposit will insert
-  const int ipour = modify->find_fix_by_style("^pour");
-  const int idep = modify->find_fix_by_style("^deposit");
+  Fix *pour = tdem_lammps::compat::first_fix_by_style(modify, "^pour");
+  Fix *deposit = tdem_lammps::compat::first_fix_by_style(modify, "^deposit");
   for (int i = 1; i <= atom->ntypes; i++) {
     onerad_dynamic[i] = onerad_frozen[i] = 0.0;
     int itype = i;
-    if (ipour >= 0) onerad_dynamic[i] = *((double *) modify->fix[ipour]->extract("radius", itype));
+    if (pour) onerad_dynamic[i] = *((double *) pour->extract("radius", itype));
     itype = i;
-    if (idep >= 0) onerad_dynamic[i] = *((double *) modify->fix[idep]->extract("radius", itype));
+    if (deposit) onerad_dynamic[i] = *((double *) deposit->extract("radius", itype));
   }
   double *radius = atom->radius;
   int *mask = atom->mask;
@@ -760,7 +754,7 @@ void PairTDEMGran::read_restart(FILE *fp)
 
 // history of j-i from that of i-j: the tangential spring flips sign, the normal-law slots
 // (xi_max of walton_braun) do not. Used by FixNeighHistory when nondefault_history_transfer.
-void PairTDEMGran::transfer_history(double *source, double *target)
+void PairTDEMGran::transfer_history(TDEM_LMP_TRANSFER_HISTORY_PARAMS(source, target))
 {
   // the tangential block: vectors flip (kernel HistorySlot::flips_sign), scalars do not
   const int nt = tdem_lammps::tangential_history_size(utlaw);
@@ -788,14 +782,4 @@ void PairTDEMGran::unpack_forward_comm(int n, int first, double *buf)
 double PairTDEMGran::memory_usage()
 {
   return (double) nmax * sizeof(double);
-}
-
-double PairTDEMGran::atom2cut(int i)
-{
-  return atom->radius[i] * 2;
-}
-
-double PairTDEMGran::radii2cut(double r1, double r2)
-{
-  return r1 + r2;
 }

@@ -29,6 +29,7 @@ PairStyle(tdem/gran,PairTDEMGran);
 #ifndef TDEM_LMP_PAIR_TDEM_GRAN_H
 #define TDEM_LMP_PAIR_TDEM_GRAN_H
 
+#include "lammps_compat.h"
 #include "pair.h"
 #include "tdem_lammps_law.h"
 
@@ -51,12 +52,11 @@ class PairTDEMGran : public Pair {
   void write_restart(FILE *) override;
   void read_restart(FILE *) override;
   void reset_dt() override;
-  void transfer_history(double *, double *) override;
+  void transfer_history(TDEM_LMP_TRANSFER_HISTORY_PARAMS(, )) override;
   int pack_forward_comm(int, int *, double *, int, int *) override;
   void unpack_forward_comm(int, int, double *) override;
   double memory_usage() override;
-  double atom2cut(int) override;
-  double radii2cut(double, double) override;
+  TDEM_LMP_SIZE_CUT_OVERRIDES  // atom2cut, radii2cut where LAMMPS has them (lammps_compat.h)
 
   // evaluation body, instantiated per (mode, end, slip, tangential law) and ONE = 1 when every
   // type pair has the same coefficients (no per-type lookups); public for the dispatcher
