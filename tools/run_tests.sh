@@ -1,9 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: GPL-2.0-or-later
-# Set up (packages, LAMMPS headers, build) and run the whole test suite with ctest.
+# Set up (packages, LAMMPS headers, the newer LAMMPS releases, build) and run the whole test
+# suite with ctest. Besides Debian's own LAMMPS, the suite runs against LAMMPS 4Feb2025 and
+# 4Jul2026 (built once from their Debian source packages and cached in /var/cache/tdem).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-bash "$here/tools/setup.sh"
+t0=$(date +%s)
+bash "$here/tools/setup.sh" --lammps "20250204 20260704"
+t1=$(date +%s)
 build_dir="${TDEM_BUILD_DIR:-$here/build}"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
-ctest --test-dir "$build_dir" -j "${TDEM_JOBS:-$(nproc)}" --output-on-failure --timeout 900 "$@"
+rc=0
+ctest --test-dir "$build_dir" -j "${TDEM_JOBS:-$(nproc)}" --output-on-failure --timeout 900 "$@" || rc=$?
+t2=$(date +%s)
+echo "[tdem tests] set-up and build $((t1 - t0)) s, tests $((t2 - t1)) s"
+exit $rc
