@@ -48,7 +48,8 @@ the per-contact history of each style (doubles; from the style definitions).
 
 usage: bench/perf.py [--build DIR] [--steps S] [--warm W] [--repeats R] [--natoms N] [--quick]
                      [--out FILE] [--engines lammps,liggghts] [--scenes chute,bed] [--ranks 1,2]
-                     [--no-control] [--concurrent] [--metric cpu|wall]
+                     [--no-control] [--concurrent] [--metric cpu|wall] [--lammps-version V]
+  --lammps-version: LAMMPS through build/bin/tdem-lammps-V (e.g. 4Jul2026) instead of tdem-lammps
   --quick: 200 steps, 1 round, a 20000-sphere bed (a smoke run, minutes)
   --metric: the time the main table's ratio uses (default cpu; both are always in the detail tables)
 The tables go to stdout and to --out (default bench/results/perf.md; --out "" writes none).
@@ -425,6 +426,9 @@ def main():
     ap.add_argument("--concurrent", action="store_true",
                     help="run stock and tdem (and stock and control) at the same time, one on each core (1 rank only)")
     ap.add_argument("--metric", default="cpu", help="cpu or wall: the time behind the main table's ratio")
+    ap.add_argument("--lammps-version", default="",
+                    help="run LAMMPS through build/bin/tdem-lammps-VERSION (e.g. 4Jul2026, a TDEM_LAMMPS_EXTRA "
+                         "version) instead of tdem-lammps; both arms run in that executable")
     args = ap.parse_args()
     if args.quick:
         args.steps, args.repeats, args.natoms, args.warm = 200, 1, 20000, 20
@@ -449,11 +453,12 @@ def main():
     if args.repeats < 1:
         sys.exit(f"perf.py: --repeats: {args.repeats} (allowed: >= 1)")
     build = os.path.abspath(args.build)
-    exes = {"lammps": os.path.join(build, "bin", "tdem-lammps"), "liggghts": os.path.join(build, "bin", "tdem-liggghts")}
+    lmp_exe = "tdem-lammps" + ("-" + args.lammps_version if args.lammps_version else "")
+    exes = {"lammps": os.path.join(build, "bin", lmp_exe), "liggghts": os.path.join(build, "bin", "tdem-liggghts")}
     for e in engines:
         if not os.access(exes[e], os.X_OK):
             sys.exit(f"no {exes[e]} (build first)")
-    src = os.environ.get("TDEM_LAMMPS_SOURCE") or (glob.glob("/var/cache/tdem/lammps-*") + glob.glob("/opt/tdem-deps/lammps-*") + [""])[0]
+    src = os.environ.get("TDEM_LAMMPS_SOURCE") or (glob.glob("/var/cache/tdem/debian-lammps-*") + glob.glob("/opt/tdem-deps/lammps-*") + [""])[0]
     chute = os.path.join(src, "bench", "data.chute")
     work = tempfile.mkdtemp(prefix="tdem_perf.")
     log = sys.stderr

@@ -23,7 +23,7 @@ chute_setup() {
   repeats=${3:-2}
   exe=$build/bin/tdem-lammps
   [ -x "$exe" ] || { echo "no $exe (build first)" >&2; exit 1; }
-  local src=${TDEM_LAMMPS_SOURCE:-$(ls -d /var/cache/tdem/lammps-* /opt/tdem-deps/lammps-* 2>/dev/null | head -1)}
+  local src=${TDEM_LAMMPS_SOURCE:-$(ls -d /var/cache/tdem/debian-lammps-* /opt/tdem-deps/lammps-* 2>/dev/null | head -1)}
   local data=$src/bench/data.chute
   [ -f "$data" ] || { echo "no data.chute under $src/bench (set TDEM_LAMMPS_SOURCE)" >&2; exit 1; }
   work=$(mktemp -d "/tmp/tdem_$BENCH.XXXXXX")

@@ -41,7 +41,7 @@
 # usage: [CALLGRIND=1] bench/lammps/bench_laws.sh [BUILD_DIR] [STEPS] [REPEATS]
 #   BUILD_DIR  default build (tdem-lammps is BUILD_DIR/bin/tdem-lammps)
 #   needs data.chute: from $TDEM_LAMMPS_SOURCE/bench (default: /opt/tdem-deps/lammps-*/bench
-#   or /var/cache/tdem/lammps-*/bench)
+#   or /var/cache/tdem/debian-lammps-*/bench)
 set -eu
 BENCH=bench_laws
 source "$(dirname "$0")/bench_chute.sh"

@@ -30,7 +30,7 @@
 # steps of each style in its own process): total, and inside the pair style's compute().
 # usage: [CALLGRIND=1] bench/lammps/bench_tangential.sh [BUILD_DIR] [STEPS] [REPEATS]
 #   needs data.chute: from $TDEM_LAMMPS_SOURCE/bench (default: /opt/tdem-deps/lammps-*/bench
-#   or /var/cache/tdem/lammps-*/bench)
+#   or /var/cache/tdem/debian-lammps-*/bench)
 set -eu
 BENCH=bench_tangential
 source "$(dirname "$0")/bench_chute.sh"

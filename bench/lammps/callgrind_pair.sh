@@ -24,7 +24,7 @@ natoms=${4:-100000}
 exe=$build/bin/tdem-lammps
 [ -x "$exe" ] || { echo "no $exe (build first)" >&2; exit 1; }
 command -v valgrind > /dev/null || { echo "valgrind not found" >&2; exit 1; }
-src=${TDEM_LAMMPS_SOURCE:-$( (ls -d /var/cache/tdem/lammps-* /opt/tdem-deps/lammps-* 2>/dev/null || true) | head -1)}
+src=${TDEM_LAMMPS_SOURCE:-$( (ls -d /var/cache/tdem/debian-lammps-* /opt/tdem-deps/lammps-* 2>/dev/null || true) | head -1)}
 [ -f "$src/bench/data.chute" ] || { echo "no data.chute under $src/bench (set TDEM_LAMMPS_SOURCE)" >&2; exit 1; }
 bed=$build/bench_cache/bed$natoms.data
 if [ ! -f "$bed" ]; then

@@ -14,13 +14,45 @@ import numpy as np
 def parse_args(argv):
     """--tdem PATH --lmp PATH --plugin PATH --mpirun PATH (all optional)."""
     out = {"tdem": None, "lmp": "/usr/bin/lmp", "plugin": None, "mpirun": "mpirun",
-           "examples": "/usr/share/lammps/examples"}
+           "examples": "/usr/share/lammps/examples", "version": "29Sep2021", "mode": "tdem"}
     i = 1
     while i < len(argv):
         key = argv[i].lstrip("-")
         out[key] = argv[i + 1]
         i += 2
     return out
+
+
+_MONTHS = {m: i + 1 for i, m in enumerate(
+    ("Jan", "Feb", "Mar", "Apr", "May", "Jun", "Jul", "Aug", "Sep", "Oct", "Nov", "Dec"))}
+
+
+def lammps_date(args):
+    """The release date of the LAMMPS under test (--version 4Jul2026) as (year, month, day)."""
+    m = re.match(r"^(\d+)([A-Za-z]{3})(\d{4})$", args.get("version", ""))
+    if not m:
+        raise SystemExit("unknown LAMMPS version name '%s' (expected e.g. 4Jul2026)" % args.get("version"))
+    return int(m.group(3)), _MONTHS[m.group(2)], int(m.group(1))
+
+
+def classic_walls(args):
+    """True where the stock fix wall/gran hooke/history and hertz/history are the classic code
+    that tdem's fix tdem/wall/gran reproduces bit for bit (LAMMPS before mid-2023). Later
+    versions compute them through the GranularModel sub-models (granular_model.cpp), with the
+    same physics in another order of operations (the unit normal in place of the centre
+    distance, the Coulomb rescaling through the damping force), so their results agree with
+    tdem's to round-off but not bitwise, and the zcylinder wall is gone from fix wall/gran."""
+    return lammps_date(args) < (2023, 6, 1)
+
+
+def stock_wall_friction_sound(args):
+    """False for the LAMMPS versions whose sub-model fix wall/gran hooke/history (and
+    wall/gran/region) has the classic-tangential defect that LAMMPS fixed on 2026-05-29 (PR
+    5007: too little dissipation, or energy gain, at grazing frictional impacts): from mid-2023
+    up to the first release after the fix, 4Jul2026. There the stock walls are compared with
+    tdem's only without friction."""
+    d = lammps_date(args)
+    return d < (2023, 6, 1) or d >= (2026, 6, 1)
 
 
 _WORKDIRS = []
@@ -153,6 +185,27 @@ def stock_interaction(kn=2000, kt=600, gn=50, gt=25, mu=0.5, limit=False):
     for k, w in enumerate(WALLS):
         lines.append("fix w%d all wall/gran hooke/history %s %s" % (k, arg, w))
     return "\n".join(lines)
+
+
+def stock_pair_tdem_walls(kn=2000, kt=600, gn=50, gt=25, mu=0.5, limit=False):
+    """The stock pair gran/hooke/history with fix tdem/wall/gran walls of the same physics: run
+    by tdem-lammps (which has every stock style), it isolates the stock pair style where the
+    stock walls are not the classic code (classic_walls)."""
+    arg = "%r %r %r %r %r 1%s" % (kn, kt, gn, gt, mu, " limit_damping" if limit else "")
+    law = tdem_law(kn, kt, gn, gt, mu, limit)
+    lines = ["pair_style gran/hooke/history " + arg, "pair_coeff * *"]
+    for k, w in enumerate(WALLS):
+        lines.append("fix w%d all tdem/wall/gran %s %s" % (k, law, w))
+    return "\n".join(lines)
+
+
+def stock_reference(args, limit=False):
+    """(executable, interaction) of the stock reference run of the settling-bed scene: the stock
+    lmp with stock pair and walls where the walls are classic, else tdem-lammps with the stock
+    pair and tdem walls (see classic_walls)."""
+    if classic_walls(args):
+        return args["lmp"], stock_interaction(limit=limit)
+    return args["tdem"], stock_pair_tdem_walls(limit=limit)
 
 
 def tdem_law(kn=2000, kt=600, gn=50, gt=25, mu=0.5, limit=False):

@@ -132,6 +132,9 @@ create_box 1 box
 fix pm all property/atom mol ghost yes
 read_data body.data add append fix pm NULL Molecules
 neigh_modify exclude molecule/intra all
+# one free body, no contacts: a skin of 2 m keeps the list from being rebuilt every step (the
+# default of LAMMPS since 2023 is delay 0) over a million 0.1 m bins
+neighbor 2.0 bin
 pair_style tdem/gran
 pair_coeff * * normal lsd stiffness 1e3 0 tangential cundall_strack 100 0 0.5
 fix c all tdem/clump template L file L.txt rotation {scheme}

@@ -18,7 +18,19 @@
    uses head-on collisions of sphere pairs (no tangential force, so only the normal law acts)
    along x, y and a diagonal with different masses: velocities after the impacts must agree
    to 1e-10 relative (different rounding order only).
+
+Where the stock fix wall/gran is not the classic code (LAMMPS from mid-2023 on, see
+lmp_common.classic_walls) the stock side of 1-3 is the stock pair style with fix tdem/wall/gran
+walls, run by the tdem executable (bitwise, as before); and the walls are compared on their own:
+5. 60 spheres that do not meet each other, with random velocities and spins, hit a floor that
+   wiggles, two side walls that shear and a cylinder (stock: wall/gran hooke/history planes and
+   wall/gran/region with a cylinder region; tdem: tdem/wall/gran planes and zcylinder) for
+   30000 steps: positions, velocities and spins agree to 1e-9 relative (rounding order only).
+   In the versions whose stock walls have the friction defect LAMMPS fixed in 2026 (PR 5007,
+   lmp_common.stock_wall_friction_sound) this comparison runs with frictionless walls, and a
+   grazing impact (76 degrees from the normal, mu 0.5) is printed: stock vs tdem energy left.
 """
+import math
 import os
 import sys
 
@@ -29,11 +41,14 @@ args = lc.parse_args(sys.argv)
 chk = lc.Checker("lammps.equivalence")
 NSTEPS = 12000
 
+CLASSIC = lc.classic_walls(args)
+print("LAMMPS %s: stock walls are %s" % (args["version"], "the classic code" if CLASSIC else
+      "GranularModel sub-models (the stock side uses tdem walls; walls compared in part 5)"))
 for limit in (False, True):
     tag = "limit" if limit else "plain"
     wd = lc.workdir("equiv_" + tag)
-    _, out_s = lc.run(args["lmp"], lc.scene(lc.stock_interaction(limit=limit), NSTEPS, "dump.stock"),
-                      wd, "in.stock")
+    ref_exe, ref_inter = lc.stock_reference(args, limit=limit)
+    _, out_s = lc.run(ref_exe, lc.scene(ref_inter, NSTEPS, "dump.stock"), wd, "in.stock")
     _, out_t = lc.run(args["tdem"], lc.scene(lc.tdem_interaction(limit=limit), NSTEPS, "dump.tdem"),
                       wd, "in.tdem")
     cols, a = lc.read_dump(os.path.join(wd, "dump.tdem"))
@@ -93,13 +108,15 @@ write_dump      all custom {dump} id x y z vx vy vz omegax omegay omegaz modify 
 """
 WALLS_CYL = ("zcylinder 0.035", "zplane 0 NULL wiggle z 0.001 0.01", "xplane -0.025 0.025 shear y 0.05")
 stock_arg = "2000 600 50 25 0.5 1"
-st = "pair_style gran/hooke/history %s\npair_coeff * *\n" % stock_arg + "\n".join(
-    "fix w%d all wall/gran hooke/history %s %s" % (k, stock_arg, w) for k, w in enumerate(WALLS_CYL))
 law = lc.tdem_law()
+st = "pair_style gran/hooke/history %s\npair_coeff * *\n" % stock_arg + "\n".join(
+    ("fix w%d all wall/gran hooke/history %s %s" % (k, stock_arg, w)) if CLASSIC else
+    ("fix w%d all tdem/wall/gran %s %s" % (k, law, w)) for k, w in enumerate(WALLS_CYL))
 td = "pair_style tdem/gran\npair_coeff * * %s\n" % law + "\n".join(
     "fix w%d all tdem/wall/gran %s %s" % (k, law, w) for k, w in enumerate(WALLS_CYL))
 wd = lc.workdir("equiv_cyl")
-_, out_s = lc.run(args["lmp"], CYL.format(interaction=st, dump="dump.stock"), wd, "in.stock")
+_, out_s = lc.run(args["lmp"] if CLASSIC else args["tdem"], CYL.format(interaction=st, dump="dump.stock"),
+                  wd, "in.stock")
 _, out_t = lc.run(args["tdem"], CYL.format(interaction=td, dump="dump.tdem"), wd, "in.tdem")
 cols, a = lc.read_dump(os.path.join(wd, "dump.tdem"))
 _, b = lc.read_dump(os.path.join(wd, "dump.stock"))
@@ -178,4 +195,106 @@ print("granular head-on: max relative velocity difference %.3g" % worst)
 chk.check(a[0, v[0]] < 0 and a[1, v[0]] > 0 and a[2, v[1]] < 0 and a[3, v[1]] > 0 and a[4, v[1]] < 0,
           "granular head-on: all pairs rebounded")
 chk.check(worst <= 1e-10, "granular head-on: velocities agree with pair granular to 1e-10 (max %.3g)" % worst)
+
+# ---- the walls on their own, where the stock walls are the sub-model code
+WALLS_ALONE = """
+units           si
+atom_style      sphere
+atom_modify     map array
+boundary        f f f
+newton          off
+comm_modify     vel yes
+region          box block -0.05 0.05 -0.05 0.05 0 0.2 units box
+create_box      1 box
+region          cyl cylinder z 0 0 0.045 -1 1 side in units box
+{atoms}
+set             group all density 2500
+neighbor        0.001 bin
+neigh_modify    delay 0
+{interaction}
+fix             g all gravity 9.81 vector 0 0 -1
+fix             nve all nve/sphere
+timestep        1e-5
+compute         rke all erotate/sphere
+thermo_style    custom step ke c_rke
+run             30000
+write_dump      all custom {dump} id x y z vx vy vz omegax omegay omegaz modify sort id format float %.17g
+"""
+if not CLASSIC:
+    import random
+    rng = random.Random(3)
+    pts = []
+    while len(pts) < 60:  # centres at least 12 mm apart: the spheres (< 10 mm) do not meet at first
+        p = (rng.uniform(-0.03, 0.03), rng.uniform(-0.03, 0.03), rng.uniform(0.01, 0.15))
+        if all(sum((a - b) ** 2 for a, b in zip(p, q)) > 0.012 ** 2 for q in pts):
+            pts.append(p)
+    lines = []
+    for i, p in enumerate(pts):
+        lines.append("create_atoms    1 single %r %r %r units box" % p)
+        lines.append("set             atom %d diameter %r" % (i + 1, rng.uniform(0.006, 0.01)))
+        lines.append("set             atom %d vx %r vy %r vz %r" % ((i + 1,) + tuple(rng.uniform(-0.5, 0.5) for _ in range(3))))
+        lines.append("set             atom %d omega %r %r %r" % ((i + 1,) + tuple(rng.uniform(-50, 50) for _ in range(3))))
+    atoms = "\n".join(lines)
+    walls = ("zplane 0 NULL wiggle z 0.001 20", "xplane -0.04 0.04 shear y 0.05")
+    sound = lc.stock_wall_friction_sound(args)
+    if not sound:
+        stock_arg = "2000 600 50 25 0.0 1"
+        law = lc.tdem_law(mu=0.0)
+        print("walls alone: LAMMPS %s has the stock-wall friction defect fixed in 2026 (PR 5007): "
+              "compared without friction" % args["version"])
+    # no pair interaction: every sphere meets only walls
+    st = "pair_style zero 0.011\npair_coeff * *\n" + "\n".join(
+        "fix w%d all wall/gran hooke/history %s %s" % (k, stock_arg, w) for k, w in enumerate(walls)) + \
+        "\nfix wc all wall/gran/region hooke/history %s region cyl" % stock_arg
+    td = "pair_style zero 0.011\npair_coeff * *\n" + "\n".join(
+        "fix w%d all tdem/wall/gran %s %s" % (k, law, w) for k, w in enumerate(walls)) + \
+        "\nfix wc all tdem/wall/gran %s zcylinder 0.045" % law
+    wd = lc.workdir("equiv_walls")
+    lc.run(args["lmp"], WALLS_ALONE.format(atoms=atoms, interaction=st, dump="dump.stock"), wd, "in.stock")
+    lc.run(args["tdem"], WALLS_ALONE.format(atoms=atoms, interaction=td, dump="dump.tdem"), wd, "in.tdem")
+    cols, a = lc.read_dump(os.path.join(wd, "dump.tdem"))
+    _, b = lc.read_dump(os.path.join(wd, "dump.stock"))
+    per, worst = lc.rel_diff(a[:, 1:], b[:, 1:])
+    print("walls alone (stock sub-model walls vs tdem/wall/gran): max relative difference per column %s: %s"
+          % (cols[1:], ["%.3g" % x for x in per]))
+    r = (a[:, cols.index("x")] ** 2 + a[:, cols.index("y")] ** 2) ** 0.5
+    chk.check(a.shape == b.shape and worst <= 1e-9,
+              "walls alone: tdem/wall/gran equals stock wall/gran (+ region cylinder) to 1e-9 (max %.3g)" % worst)
+    chk.check(r.max() < 0.045 and a[:, cols.index("z")].min() > 0, "walls alone: the walls hold the spheres")
+    # a grazing frictional impact on a plane: the energy each wall leaves
+    GRAZE = """
+units           si
+atom_style      sphere
+atom_modify     map array
+boundary        f f f
+region          box block -0.5 0.5 -0.05 0.05 0 0.2 units box
+create_box      1 box
+create_atoms    1 single 0.0 0.0 0.0041 units box
+set             atom 1 diameter 0.008
+set             atom 1 vx %r vz %r
+set             group all density 2500
+pair_style      zero 0.011
+pair_coeff      * *
+{wall}
+fix             nve all nve/sphere
+timestep        1e-6
+compute         r all erotate/sphere
+variable        e equal 0.5*mass[1]*(vx[1]^2+vy[1]^2+vz[1]^2)+c_r
+thermo_style    custom step v_e
+thermo_modify   format float %%.15g
+thermo          20000
+run             20000
+""" % (math.sin(math.radians(76)), -math.cos(math.radians(76)))
+    ws = "fix w all wall/gran hooke/history 2000 600 50 25 0.5 1 zplane 0 NULL"
+    wt = "fix w all tdem/wall/gran %s zplane 0 NULL" % lc.tdem_law()
+    _, os_ = lc.run(args["lmp"], GRAZE.format(wall=ws), wd, "in.graze_stock")
+    _, ot = lc.run(args["tdem"], GRAZE.format(wall=wt), wd, "in.graze_tdem")
+    es = [float(r.split()[1]) for r in lc.thermo_blocks(os_)[1:]]
+    et = [float(r.split()[1]) for r in lc.thermo_blocks(ot)[1:]]
+    print("grazing impact (76 deg, mu 0.5): energy left, stock wall/gran %.6f, tdem/wall/gran %.6f"
+          % (es[-1] / es[0], et[-1] / et[0]))
+    chk.check(et[-1] < et[0], "grazing impact: tdem/wall/gran dissipates (%.6f of the energy left)" % (et[-1] / et[0]))
+    if sound:
+        chk.check(abs(es[-1] - et[-1]) <= 1e-9 * es[0],
+                  "grazing impact: stock and tdem walls leave the same energy (%.9f, %.9f)" % (es[-1] / es[0], et[-1] / et[0]))
 chk.done()

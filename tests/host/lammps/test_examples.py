@@ -92,7 +92,11 @@ if os.path.exists(src):
     tt = re.sub(r"(?m)^pair_coeff\s+\* \*\s*$", "pair_coeff * * " + law, tt)
     tt = re.sub(r"(?m)wall/gran hooke/history(\s+\S+){6}", "tdem/wall/gran " + law, tt)
     wd = lc.workdir("ex_pour_tdem")
-    _, out_s = lc.run(args["lmp"], text, wd, "in.pour.stock")
+    if not lc.classic_walls(args):
+        # the stock walls are not the classic code here (lmp_common.classic_walls): the stock
+        # side keeps its pair style and takes the tdem walls, run by the tdem executable
+        text = re.sub(r"(?m)wall/gran hooke/history(\s+\S+){6}", "tdem/wall/gran " + law, text)
+    _, out_s = lc.run(args["lmp"] if lc.classic_walls(args) else args["tdem"], text, wd, "in.pour.stock")
     _, out_t = lc.run(args["tdem"], tt, wd, "in.pour.tdem")
     ts, tt_ = lc.thermo_blocks(out_s), lc.thermo_blocks(out_t)
     chk.check("tdem/wall/gran" in tt and "tdem/gran" in tt, "in.pour converted to the tdem styles")

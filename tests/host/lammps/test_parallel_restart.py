@@ -55,7 +55,8 @@ wd = lc.workdir("np")
 lc.run(args["tdem"], lc.scene(lc.tdem_interaction(), N, "dump.np1"), wd, "in.np1")
 _, out2 = lc.run(args["tdem"], lc.scene(lc.tdem_interaction(), N, "dump.np2", processors="processors 2 1 1"),
                  wd, "in.np2", np_=2, mpirun=args["mpirun"])
-_, outs2 = lc.run(args["lmp"], lc.scene(lc.stock_interaction(), N, "dump.stock2", processors="processors 2 1 1"),
+ref_exe, ref_inter = lc.stock_reference(args)  # stock walls, or tdem walls where they are not classic
+_, outs2 = lc.run(ref_exe, lc.scene(ref_inter, N, "dump.stock2", processors="processors 2 1 1"),
                   wd, "in.stock2", np_=2, mpirun=args["mpirun"])
 cols, a1 = lc.read_dump(os.path.join(wd, "dump.np1"))
 _, a2 = lc.read_dump(os.path.join(wd, "dump.np2"))

@@ -15,7 +15,11 @@ args = lc.parse_args(sys.argv)
 chk = lc.Checker("lammps.plugin_host")
 host = args["host"]
 wd = lc.workdir("plugin_host")
-lc.run(host, lc.scene(lc.stock_interaction(), 6000, "dump.stock"), wd, "in.stock")
+if lc.classic_walls(args):
+    lc.run(host, lc.scene(lc.stock_interaction(), 6000, "dump.stock"), wd, "in.stock")
+else:  # the stock pair style with tdem walls (the stock walls are compared in lammps.equivalence)
+    lc.run(host, "plugin load %s\n" % args["plugin"] + lc.scene(lc.stock_pair_tdem_walls(), 6000, "dump.stock"),
+           wd, "in.stock")
 _, out = lc.run(host, "plugin load %s\n" % args["plugin"] + lc.scene(lc.tdem_interaction(), 6000, "dump.tdem"),
                 wd, "in.tdem")
 chk.check("Loading plugin: tdem pair style tdem/gran" in out, "plugin loaded into %s" % host)

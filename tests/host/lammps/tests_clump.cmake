@@ -5,9 +5,9 @@ if(NOT TDEM_LAMMPS_CLUMP)
 endif()
 foreach(_p nve_single free_body flat_impact mpi restart insert bad_input
           corr_flat corr_continuity corr_local_mass corr_mpi)
-  add_test(NAME lammps.clump.${_p}
+  add_test(NAME ${_pfx}.clump.${_p}
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py ${_args} --part ${_p})
-  set_tests_properties(lammps.clump.${_p} PROPERTIES LABELS lammps TIMEOUT 600)
+  set_tests_properties(${_pfx}.clump.${_p} PROPERTIES LABELS ${_lbl} TIMEOUT 600)
 endforeach()
-set_tests_properties(lammps.clump.mpi lammps.clump.restart lammps.clump.insert lammps.clump.corr_mpi
+set_tests_properties(${_pfx}.clump.mpi ${_pfx}.clump.restart ${_pfx}.clump.insert ${_pfx}.clump.corr_mpi
                      PROPERTIES PROCESSORS 2)

@@ -6,8 +6,8 @@ if(NOT TDEM_LAMMPS_GRATE)
   return()
 endif()
 foreach(_part kinematics carry impact parallel bad_input twod scene)
-  add_test(NAME lammps.grate.${_part}
+  add_test(NAME ${_pfx}.grate.${_part}
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_grate.py ${_args} --part ${_part})
-  set_tests_properties(lammps.grate.${_part} PROPERTIES LABELS lammps TIMEOUT 300)
+  set_tests_properties(${_pfx}.grate.${_part} PROPERTIES LABELS ${_lbl} TIMEOUT 300)
 endforeach()
-set_tests_properties(lammps.grate.parallel lammps.grate.scene PROPERTIES PROCESSORS 2)
+set_tests_properties(${_pfx}.grate.parallel ${_pfx}.grate.scene PROPERTIES PROCESSORS 2)

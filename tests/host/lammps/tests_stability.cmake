@@ -24,9 +24,9 @@ if(TDEM_LAMMPS_GRATE)
   endif()
 endif()
 foreach(_c ${_stab_cases})
-  add_test(NAME lammps.stability.${_c}
+  add_test(NAME ${_pfx}.stability.${_c}
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_stability.py ${_args} --case ${_c})
-  set_tests_properties(lammps.stability.${_c} PROPERTIES LABELS "lammps;stability" TIMEOUT 300
+  set_tests_properties(${_pfx}.stability.${_c} PROPERTIES LABELS "${_lbl};stability" TIMEOUT 300
                        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
-set_tests_properties(lammps.stability.rank_crossing_in_contact_np2_equals_np1 PROPERTIES PROCESSORS 2)
+set_tests_properties(${_pfx}.stability.rank_crossing_in_contact_np2_equals_np1 PROPERTIES PROCESSORS 2)

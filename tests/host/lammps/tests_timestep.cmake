@@ -6,10 +6,10 @@ if(TDEM_LAMMPS_TIMESTEP)
     string(REPLACE ":" ";" _pp "${_p}")
     list(GET _pp 0 _part)
     list(GET _pp 1 _what)
-    add_test(NAME lammps.timestep.${_what}
+    add_test(NAME ${_pfx}.timestep.${_what}
              COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_timestep_advice.py ${_args} --part ${_part})
-    set_tests_properties(lammps.timestep.${_what} PROPERTIES LABELS lammps TIMEOUT 300)
+    set_tests_properties(${_pfx}.timestep.${_what} PROPERTIES LABELS ${_lbl} TIMEOUT 300)
   endforeach()
   # the run-time check also runs on 2 ranks
-  set_tests_properties(lammps.timestep.runtime_check_on_raised_velocity PROPERTIES PROCESSORS 2)
+  set_tests_properties(${_pfx}.timestep.runtime_check_on_raised_velocity PROPERTIES PROCESSORS 2)
 endif()

@@ -1,0 +1,61 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+# The LAMMPS host tests of one LAMMPS version (included once per version by CMakeLists.txt):
+# test names ${_pfx}.<test>, label ${_lbl}, arguments ${_args} (--tdem, --lmp, --plugin, ...).
+
+foreach(t equivalence granular_models restitution parallel_restart plugin examples bad_input hertz walton_braun
+          thornton)
+  add_test(NAME ${_pfx}.${t}
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_${t}.py ${_args})
+  set_tests_properties(${_pfx}.${t} PROPERTIES LABELS ${_lbl} TIMEOUT 600)
+endforeach()
+# host vs the single-collision harness tdem-collide (every normal law, wall and pair impacts)
+if(TARGET tdem-collide)
+  add_test(NAME ${_pfx}.harness_agreement
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_harness_agreement.py ${_args}
+                   --collide $<TARGET_FILE:tdem-collide>)
+  set_tests_properties(${_pfx}.harness_agreement PROPERTIES LABELS ${_lbl} TIMEOUT 600)
+  # the tangential laws: oblique impacts vs the harness, slope, rolling, restart, MPI
+  add_test(NAME ${_pfx}.tangential
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_tangential.py ${_args}
+                   --collide $<TARGET_FILE:tdem-collide>)
+  set_tests_properties(${_pfx}.tangential PROPERTIES LABELS ${_lbl} TIMEOUT 600 PROCESSORS 2)
+  # fix tdem/integrate: a sphere-wall impact with every scheme vs tdem-collide --scheme
+  add_test(NAME ${_pfx}.integrate_harness
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_integrate.py ${_args}
+                   --collide $<TARGET_FILE:tdem-collide> --part harness)
+  set_tests_properties(${_pfx}.integrate_harness PROPERTIES LABELS ${_lbl} TIMEOUT 600)
+endif()
+# fix tdem/integrate (src/integrators/lammps): velocity_verlet = nve/sphere and free flight,
+# multi-step history through MPI and restart (two groups of schemes), bad input
+add_test(NAME ${_pfx}.integrate_nve
+         COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_integrate.py ${_args} --part nve)
+add_test(NAME ${_pfx}.integrate_restart_a
+         COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_integrate.py ${_args} --part restart
+                 --schemes ab4,ab5,gear5,abm4)
+add_test(NAME ${_pfx}.integrate_restart_b
+         COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_integrate.py ${_args} --part restart
+                 --schemes beeman,gear6,taylor3,position_verlet,leapfrog)
+add_test(NAME ${_pfx}.integrate_bad_input
+         COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_integrate.py ${_args} --part bad_input)
+set_tests_properties(${_pfx}.integrate_nve ${_pfx}.integrate_restart_a ${_pfx}.integrate_restart_b
+                     ${_pfx}.integrate_bad_input PROPERTIES LABELS ${_lbl} TIMEOUT 600)
+set_tests_properties(${_pfx}.integrate_restart_a ${_pfx}.integrate_restart_b PROPERTIES PROCESSORS 2)
+# the MPI test uses both cores
+set_tests_properties(${_pfx}.parallel_restart ${_pfx}.walton_braun ${_pfx}.thornton PROPERTIES PROCESSORS 2)
+
+# the plugin loaded with `plugin load` into this version's own lmp, where that has the PLUGIN
+# package (shared-library build): equal to the stock styles there and to tdem-lammps
+if(_stock_has_plugin)
+  add_test(NAME ${_pfx}.plugin_host
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_plugin_host.py ${_args}
+                   --host ${_stock})
+  set_tests_properties(${_pfx}.plugin_host PROPERTIES LABELS ${_lbl} TIMEOUT 600)
+endif()
+
+# tests of the optional modules and suites, each in its own file (tests_<name>.cmake) so that
+# they can be added independently; a module's tests are skipped when the module is off
+foreach(_m grate mixing timestep clump stability)
+  if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/tests_${_m}.cmake)
+    include(${CMAKE_CURRENT_SOURCE_DIR}/tests_${_m}.cmake)
+  endif()
+endforeach()
