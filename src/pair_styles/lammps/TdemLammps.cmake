@@ -9,7 +9,8 @@
 #                 OFF for the extra test versions (TDEM_LAMMPS_EXTRA)
 # Targets, with <suffix> "" for the main version and "_<name>" (e.g. _4Jul2026) otherwise:
 #   tdem_lammps_headers<suffix>   usage requirements (headers, API feature macros)
-#   tdem_lammps_styles<suffix>    the style objects (once, for tdem-lammps)
+#   tdem_lammps_styles<suffix>    the style objects (position independent: for tdem-lammps and
+#                                 the plugin alike)
 #   tdem-lammps[-<name>]          bin/: drop-in for lmp linked against <library>
 #   tdem_lammps_plugin<suffix>    lib/[lammps-<name>/]tdem_lammps_plugin.so
 # The version is recorded in the global properties TDEM_LAMMPS_VERSIONS (names) and
@@ -46,9 +47,9 @@ function(tdem_lammps_build suffix header_dir library stock_lmp main)
     set(_libdir ${CMAKE_BINARY_DIR}/lib/lammps-${_name})
   endif()
 
+  add_library(tdem_lammps_styles${suffix} OBJECT ${TDEM_LAMMPS_STYLE_SOURCES})
+  target_link_libraries(tdem_lammps_styles${suffix} PUBLIC ${_hdr})
   if(library)
-    add_library(tdem_lammps_styles${suffix} OBJECT ${TDEM_LAMMPS_STYLE_SOURCES})
-    target_link_libraries(tdem_lammps_styles${suffix} PUBLIC ${_hdr})
     add_executable(${_exe} ${_drv}/main.cpp $<TARGET_OBJECTS:tdem_lammps_styles${suffix}>)
     target_link_libraries(${_exe} PRIVATE ${_hdr} ${library} MPI::MPI_CXX ${CMAKE_DL_LIBS})
     # export only the LAMMPS::post_create interposer (re-registration after `clear`)
@@ -58,12 +59,13 @@ function(tdem_lammps_build suffix header_dir library stock_lmp main)
                           LINK_DEPENDS ${_drv}/tdem-lammps.dynlist BUILD_RPATH "${_libpath}")
   endif()
 
-  # The plugin: the same style sources, compiled again into a module. It is not linked against
+  # The plugin: the same style objects in a module. It is not linked against
   # liblammps: the host process (tdem-lammps or a PLUGIN-enabled lmp) provides those symbols.
   # -Bsymbolic binds the plugin's own symbols internally, so a host that also contains the tdem
   # styles never mixes the two copies. The file name ends in "plugin.so", so LAMMPS_PLUGIN_PATH
   # auto-loading picks it up.
-  add_library(tdem_lammps_plugin${suffix} MODULE ${_drv}/tdem_lammps_plugin.cpp ${TDEM_LAMMPS_STYLE_SOURCES})
+  add_library(tdem_lammps_plugin${suffix} MODULE ${_drv}/tdem_lammps_plugin.cpp
+              $<TARGET_OBJECTS:tdem_lammps_styles${suffix}>)
   target_link_libraries(tdem_lammps_plugin${suffix} PRIVATE ${_hdr})
   target_link_options(tdem_lammps_plugin${suffix} PRIVATE "LINKER:-Bsymbolic")
   set_target_properties(tdem_lammps_plugin${suffix} PROPERTIES PREFIX "" OUTPUT_NAME tdem_lammps_plugin
