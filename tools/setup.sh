@@ -98,7 +98,8 @@ fi
 lmp_srcver="$(dpkg-query -W -f='${source:Version}' liblammps-dev)"   # source version, no +bN
 lmp_upstream="$(dpkg-query -W -f='${source:Upstream-Version}' liblammps-dev)"
 lmp_tree="$deps_dir/debian-lammps-$lmp_upstream"
-if [ ! -f "$lmp_tree/.complete" ]; then
+# (fix_neigh_history.cpp: tdem's build reads how it stores history partner IDs in restart files)
+if [ ! -f "$lmp_tree/.complete" ] || [ ! -f "$lmp_tree/src/fix_neigh_history.cpp" ]; then
   $SUDO mkdir -p "$deps_dir/download"
   log "fetching the LAMMPS source package $lmp_srcver (headers only are unpacked)"
   (cd "$deps_dir/download" && $SUDO apt-get source --download-only --tar-only -qq "lammps=$lmp_srcver" 2>&1 |
@@ -116,6 +117,7 @@ if [ ! -f "$lmp_tree/.complete" ]; then
   [[ "$first" == */* ]] && p="${first%%/*}/"
   $SUDO tar -C "$tmp" -xf "$orig" --wildcards --no-wildcards-match-slash \
     "${p}src/*.h" "${p}src/fmt/*" "${p}src/GRANULAR/*" "${p}src/PLUGIN/*" "${p}src/main.cpp" \
+    "${p}src/fix_neigh_history.cpp" \
     "${p}bench/in.chute*" "${p}bench/data.chute" "${p}examples/pour/*" "${p}examples/granregion/*" \
     "${p}examples/granular/*"
   top="$(dirname "$(find "$tmp" -maxdepth 3 -path '*/src/version.h' | head -n 1)")/.."

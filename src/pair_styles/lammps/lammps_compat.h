@@ -15,6 +15,9 @@
 //   TDEM_LMP_HISTORY_TYPES        Pair::transfer_history(src, dst, itype, jtype) (else (src, dst))
 //   TDEM_LMP_SIZE_CUT             Pair::atom2cut / radii2cut exist              (removed in 2026)
 //   TDEM_LMP_ABORT_GET_UNIVERSE   LAMMPSAbortException::get_universe()          (else .universe)
+//   TDEM_LMP_HISTORY_TAG_BITS     FixNeighHistory writes partner IDs into restart files as the
+//   TDEM_LMP_HISTORY_TAG_VALUE    bits of an integer (since 2023) / as a double's value (2022);
+//                                 from the text of fix_neigh_history.cpp; neither: unknown
 //
 // The styles call the functions below and use the two declaration macros; they contain no
 // version test of their own.
@@ -56,6 +59,62 @@
 
 namespace tdem_lammps {
 namespace compat {
+
+// How this LAMMPS's FixNeighHistory stores the partner IDs in restart files.
+enum class HistoryTags { value = 0, bits = 1, unknown = -1 };
+inline constexpr HistoryTags history_tags()
+{
+#if defined(TDEM_LMP_HISTORY_TAG_BITS)
+  return HistoryTags::bits;
+#elif defined(TDEM_LMP_HISTORY_TAG_VALUE)
+  return HistoryTags::value;
+#else
+  return HistoryTags::unknown;
+#endif
+}
+
+// The per-atom restart data of fix (id, style) that read_restart left in atom->extra, before
+// the fix is created: rewrite the partner IDs of a FixNeighHistory block (size, npartner, then
+// per partner the ID and dnum values) from the encoding `from` into `to`. Returns the number of
+// IDs rewritten (0 when the file holds no such fix). Modify's restart lists are protected; they
+// are reached through pointers to members of a derived class.
+struct ModifyRestartLists : public LAMMPS_NS::Modify {
+  static int peratom_index(LAMMPS_NS::Modify *m, const std::string &id, const std::string &style)
+  {
+    char **LAMMPS_NS::Modify::*ids = &ModifyRestartLists::id_restart_peratom;
+    char **LAMMPS_NS::Modify::*styles = &ModifyRestartLists::style_restart_peratom;
+    int *LAMMPS_NS::Modify::*index = &ModifyRestartLists::index_restart_peratom;
+    for (int i = 0; i < m->nfix_restart_peratom; i++)
+      if (id == (m->*ids)[i] && style == (m->*styles)[i]) return (m->*index)[i];
+    return -1;
+  }
+};
+
+inline long convert_history_restart_tags(LAMMPS_NS::Modify *modify, LAMMPS_NS::Atom *atom,
+                                         const std::string &id, const std::string &style, int dnum,
+                                         HistoryTags from, HistoryTags to)
+{
+  using LAMMPS_NS::tagint;
+  if (from == to) return 0;
+  const int nth = ModifyRestartLists::peratom_index(modify, id, style);
+  if (nth < 0 || !atom->extra) return 0;
+  long n = 0;
+  for (int i = 0; i < atom->nlocal; i++) {
+    double *x = atom->extra[i];
+    int m = 0;
+    for (int k = 0; k < nth; k++) m += static_cast<int>(x[m]);
+    m++;  // the size of this block
+    const int npartner = static_cast<int>(x[m++]);
+    for (int p = 0; p < npartner; p++, m += dnum) {
+      tagint tag;
+      if (from == HistoryTags::value) tag = static_cast<tagint>(x[m]);
+      else tag = LAMMPS_NS::ubuf(x[m]).i;
+      x[m++] = (to == HistoryTags::value) ? static_cast<double>(tag) : LAMMPS_NS::ubuf(tag).d;
+      n++;
+    }
+  }
+  return n;
+}
 
 // a size neighbour list (with history when `history`) for a pair style
 inline void request_size_list(LAMMPS_NS::Neighbor *neighbor, LAMMPS_NS::Pair *pair, int instance_me,

@@ -64,6 +64,7 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   nmax = 0;
   fix_clump = nullptr;
   corr_mode = 0;
+  restart_history_tags = -2;
 
   // placeholder for the FixNeighHistory, so it keeps the input-script position in the fix list
   fix_history = nullptr;
@@ -488,7 +489,28 @@ void PairTDEMGran::init_style()
   nondefault_history_transfer =
       (size_history > tdem_lammps::TANGENTIAL_HISTORY || utlaw != tdem_lammps::TLAW_CUNDALL_STRACK) ? 1 : 0;
 
-  // on first init replace the placeholder with the FixNeighHistory that stores the history
+  // on first init replace the placeholder with the FixNeighHistory that stores the history.
+  // A restart file from another LAMMPS generation may store the history partners' IDs in the
+  // other encoding (lammps_compat.h): they are rewritten before the fix reads them.
+  if (fix_history == nullptr && restart_history_tags != -2) {
+    namespace cp = tdem_lammps::compat;
+    const auto from = (cp::HistoryTags) restart_history_tags;
+    if (cp::history_tags() == cp::HistoryTags::unknown && from != cp::HistoryTags::unknown)
+      error->all(FLERR, "pair tdem/gran: cannot tell how this LAMMPS stores neighbor-history partner IDs "
+                        "in restart files (its fix_neigh_history.cpp was not seen when tdem was built), so "
+                        "the contact history of this restart file cannot be read safely; build tdem "
+                        "against the full LAMMPS source tree (LAMMPS_HEADER_DIR=<lammps>/src)");
+    if (from == cp::HistoryTags::unknown && cp::history_tags() != cp::HistoryTags::unknown)
+      error->all(FLERR, "pair tdem/gran: the restart file was written by a tdem build that could not tell "
+                        "how its LAMMPS stored neighbor-history partner IDs; continue it with that build");
+    const long n = cp::convert_history_restart_tags(modify, atom, id_history, "NEIGH_HISTORY", size_history,
+                                                    from, cp::history_tags());
+    if (n > 0 && comm->me == 0)
+      utils::logmesg(lmp, "pair tdem/gran: the restart file stores neighbor-history partner IDs as " +
+                              std::string(from == cp::HistoryTags::value ? "values (LAMMPS up to 2022)"
+                                                                         : "integer bits (LAMMPS since 2023)") +
+                              "; " + std::to_string(n) + " IDs on rank 0 converted for this LAMMPS\n");
+  }
   if (fix_history == nullptr) {
     const std::string cmd = id_history + " all NEIGH_HISTORY " + std::to_string(size_history);
     fix_history = (FixNeighHistory *) modify->replace_fix(id_dummy, cmd, 1);
@@ -712,10 +734,14 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 // LawCoeffs bytes. Version 3 (power_law, extended_linear, extended_hertz) and version 4 (the
 // tangential laws other than cundall_strack) appended members to LawCoeffs; version 2 and 3
 // files hold the first LAW_COEFFS_V2_SIZE / LAW_COEFFS_V3_SIZE bytes and are still read.
+// Version 5 adds, after the version, how the writing LAMMPS stores neighbor-history partner IDs
+// (compat::HistoryTags); files of versions 2-4 were written by tdem on LAMMPS 2022 (values).
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 4;
+  const int version = 5;
   fwrite(&version, sizeof(int), 1, fp);
+  const int tags = (int) tdem_lammps::compat::history_tags();
+  fwrite(&tags, sizeof(int), 1, fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
@@ -730,10 +756,16 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version < 2 || version > 4)
+  if (version < 2 || version > 5)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads versions 2, 3 and 4)");
-  const size_t nbytes = version == 4   ? sizeof(LawCoeffs)
+                          " cannot be read (this build reads versions 2 to 5)");
+  int tags = (int) tdem_lammps::compat::HistoryTags::value;  // versions 2-4: LAMMPS 2022
+  if (version >= 5) {
+    if (me == 0) utils::sfread(FLERR, &tags, sizeof(int), 1, fp, nullptr, error);
+    MPI_Bcast(&tags, 1, MPI_INT, 0, world);
+  }
+  restart_history_tags = tags;
+  const size_t nbytes = version >= 4   ? sizeof(LawCoeffs)
                         : version == 3 ? tdem_lammps::LAW_COEFFS_V3_SIZE
                                        : tdem_lammps::LAW_COEFFS_V2_SIZE;
   for (int i = 1; i <= atom->ntypes; i++)

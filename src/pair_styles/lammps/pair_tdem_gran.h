@@ -87,6 +87,9 @@ class PairTDEMGran : public Pair {
 
   class FixNeighHistory *fix_history;
   std::string id_history, id_dummy;
+  // how the restart file this pair was read from stores the neighbor-history partner IDs
+  // (tdem_lammps::compat::HistoryTags; -2: not read from a restart file)
+  int restart_history_tags;
 
   class Fix *fix_rigid;
   double *mass_rigid;
