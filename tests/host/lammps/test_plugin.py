@@ -47,8 +47,8 @@ if args["mode"] == "plugin":
     # loading it again is ignored by LAMMPS; `clear` keeps the plugin styles
     text = "plugin load %s\nclear\n" % args["plugin"] + lc.scene(lc.tdem_interaction(), 200, "dump.clear")
     rc, out = lc.run(args["tdem"], text, wd, "in.again", check=False)
-    chk.check(rc == 0 and "Ignoring load of pair style tdem/gran" in out and "Loop time" in out,
-              "a second load is ignored and the styles survive clear")
+    # (LAMMPS 4Jul2026 says "Ignoring load of pair style tdem/gran"; 4Feb2025 says nothing after an auto-load)
+    chk.check(rc == 0 and "Loop time" in out, "a second load does no harm and the styles survive clear")
     ex = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "input_scripts",
                       "lammps", "in.tdem_settle")
     text = open(ex).read().replace("run             50000", "run             3000")
