@@ -157,8 +157,20 @@ if ! cmake -S "$here" -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DLAMMPS_HEADER
   exit 1
 fi
 grep -E '^-- tdem LAMMPS [0-9]' "$build_dir/configure.log" | sed 's/^-- /[tdem setup] /' || true
-log "building tdem ($jobs jobs)"
-if ! cmake --build "$build_dir" -j "$jobs" >"$build_dir/build.log" 2>&1; then
+log "building tdem ($jobs jobs; progress every 60 s)"
+tb=$(date +%s)
+cmake --build "$build_dir" -j "$jobs" >"$build_dir/build.log" 2>&1 &
+bpid=$!
+ticks=0
+while kill -0 "$bpid" 2>/dev/null; do
+  sleep 5
+  ticks=$((ticks + 1))
+  if [ $((ticks % 12)) = 0 ]; then
+    pct="$(grep -oE '^\[ *[0-9]+%\]' "$build_dir/build.log" | tail -n 1 || true)"
+    log "building tdem ... ${pct:-[  0%]} after $(($(date +%s) - tb)) s"
+  fi
+done
+if ! wait "$bpid"; then
   grep -E -B2 -A6 'error|Error' "$build_dir/build.log" | tail -n 80
   log "build failed (full log: $build_dir/build.log)"
   exit 1
