@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cmath>
+#include <algorithm>
 #include <complex>
 #include <vector>
 
@@ -113,13 +114,16 @@ inline double amplification(Scheme s, double w, double zeta) {
 
 // Largest h omega of the first stable interval (0, w_c] of scheme s at damping ratio zeta
 // (spectral radius <= 1 + tol); 0 if the scheme is unstable at every small step (e.g. explicit
-// Euler without damping). Scans w in steps of 0.01 up to w_max, then bisects to 1e-9.
+// Euler without damping). Strong damping shrinks w_c like 1/zeta (symplectic Euler:
+// 2 (sqrt(1 + zeta^2) - zeta) ~ 1/zeta), so the scan starts at w = 1e-4 / (1 + zeta) and grows
+// by 5 % of w, at most 0.01 per step, up to w_max; then bisects to a relative 1e-9.
 inline double critical_step(Scheme s, double zeta, double tol = 1e-9, double w_max = 6.0) {
   auto stable = [&](double w) { return amplification(s, w, zeta) <= 1.0 + tol; };
-  const double dw = 0.01;
-  if (!stable(1e-3) || !stable(dw)) return 0.0;
-  double lo = dw, hi = -1.0;
-  for (double w = 2.0 * dw; w <= w_max + 1e-12; w += dw) {
+  const double w0 = 1e-4 / (1.0 + zeta);
+  if (!stable(w0)) return 0.0;
+  double lo = w0, hi = -1.0;
+  while (lo < w_max) {
+    const double w = std::min(w_max, lo + std::min(0.01, 0.05 * lo));
     if (!stable(w)) {
       hi = w;
       break;
@@ -127,7 +131,7 @@ inline double critical_step(Scheme s, double zeta, double tol = 1e-9, double w_m
     lo = w;
   }
   if (hi < 0.0) return w_max;
-  while (hi - lo > 1e-9) {
+  while (hi - lo > 1e-9 * hi) {
     const double mid = 0.5 * (lo + hi);
     if (stable(mid)) lo = mid; else hi = mid;
   }

@@ -27,6 +27,17 @@ TEST(Stability, SymplecticEulerDampedClosedForm) {
   }
 }
 
+// The same closed form over the whole over-damped range: w_c ~ 1/zeta shrinks below any fixed
+// scan step (zeta = 158 is e = 1e-5 with the zero-force end; the earlier scan from w = 0.01
+// reported "unstable at every step" there).
+TEST(Stability, SymplecticEulerOverdampedClosedForm) {
+  for (double zeta : {1.0, 3.0, 30.0, 158.0, 1e3, 1e4, 1e5}) {
+    const double wc = 2.0 / (std::sqrt(1.0 + zeta * zeta) + zeta);  // = 2 (sqrt(1 + zeta^2) - zeta)
+    for (Scheme s : {Scheme::symplectic_euler, Scheme::leapfrog, Scheme::velocity_verlet})
+      EXPECT_NEAR(critical_step(s, zeta) / wc, 1.0, 1e-7) << info(s).name << " zeta " << zeta;
+  }
+}
+
 // Explicit Euler: |1 + i w| > 1 undamped (never stable); damped, the amplification of
 // lambda^2 - (2 - 2 zeta w) lambda + (1 - 2 zeta w + w^2) stays <= 1 while w <= 2 zeta
 // (for zeta < 1).

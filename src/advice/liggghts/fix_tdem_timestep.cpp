@@ -21,6 +21,7 @@
 #include "integrators/liggghts/fix_tdem_integrate.h"
 #include "fix_wall_gran.h"
 #include "force.h"
+#include "group.h"
 #include "lammps.h"
 #include "modify.h"
 #include "neigh_list.h"
@@ -93,7 +94,8 @@ bool hertz_type(const std::string& model) {
 /* ---------------------------------------------------------------------- */
 
 FixTdemTimestep::FixTdemTimestep(LAMMPS* lmp, int narg, char** arg)
-    : Fix(lmp, narg, arg), scheme_(ti::Scheme::velocity_verlet), runtime_warned_(false), last_step_(-1) {
+    : Fix(lmp, narg, arg), scheme_(ti::Scheme::velocity_verlet), runtime_warned_(false), last_step_(-1),
+      natoms_(0), watch_every_step_(false) {
   try {
     opt_ = th::parse_options(narg, arg, 3);
   } catch (const std::exception& e) {
@@ -105,11 +107,11 @@ FixTdemTimestep::FixTdemTimestep(LAMMPS* lmp, int narg, char** arg)
   size_vector = 3;
   global_freq = 1;
   extvector = 0;
-  nevery = opt_.every > 0 ? static_cast<int>(opt_.every) : 1;
+  nevery = 1;  // the run-time check keeps its own cadence (every); the lost-atom watch may need each step
   vec_[0] = vec_[1] = vec_[2] = 0.0;
 }
 
-int FixTdemTimestep::setmask() { return opt_.every > 0 ? END_OF_STEP : 0; }
+int FixTdemTimestep::setmask() { return opt_.every > 0 || opt_.check != th::CheckMode::off ? END_OF_STEP : 0; }
 
 void FixTdemTimestep::say(const std::string& s) {
   if (comm->me != 0) return;
@@ -502,18 +504,40 @@ void FixTdemTimestep::setup(int) {
   vec_[2] = std::isfinite(vec_[0]) && vec_[0] > 0.0 ? update->dt / vec_[0] : 0.0;
   last_step_ = update->ntimestep;
 
+  natoms_ = group->count(igroup);
+  watch_every_step_ = false;
+  unstable_.clear();
   if (opt_.check == th::CheckMode::off) return;
   std::string stop;
   for (th::Row& r : rows_) {
     if (!r.advised) continue;
     const ta::Check c = ta::check(r.a, update->dt, pol);
     if (c.verdict == ta::Verdict::stop && stop.empty()) stop = r.what + ": " + c.message;
+    if (c.verdict == ta::Verdict::stop) watch_every_step_ = true;
     if (c.verdict != ta::Verdict::ok && !(c.verdict == ta::Verdict::stop && opt_.check == th::CheckMode::stop) &&
         comm->me == 0)
       error->warning(FLERR, (std::string("fix ") + id + " tdem/timestep: " + r.what + ": " + c.message).c_str());
   }
   if (!stop.empty() && opt_.check == th::CheckMode::stop)
     error->all(FLERR, (std::string("fix ") + id + " tdem/timestep (check stop): " + stop).c_str());
+  unstable_ = stop;
+}
+
+void FixTdemTimestep::lost_check() {
+  const bigint n = group->count(igroup);
+  if (n >= natoms_) {
+    natoms_ = n;  // insertion
+    return;
+  }
+  const std::string msg = std::string("fix ") + id + " tdem/timestep: " + std::to_string(static_cast<long long>(natoms_ - n)) +
+                          " of " + std::to_string(static_cast<long long>(natoms_)) + " atoms of the group were lost by step " +
+                          std::to_string(static_cast<long long>(update->ntimestep)) +
+                          " (LIGGGHTS removes atoms that leave the box without an error)";
+  if (watch_every_step_)
+    error->all(FLERR, (msg + "; the time step is unstable: " + unstable_).c_str());
+  if (comm->me == 0)
+    error->warning(FLERR, (msg + "; the time step is within the advice (an open boundary or outflow?)").c_str());
+  natoms_ = n;
 }
 
 void FixTdemTimestep::run_check(const char* when) {
@@ -539,7 +563,11 @@ void FixTdemTimestep::run_check(const char* when) {
   runtime_warned_ = true;
 }
 
-void FixTdemTimestep::end_of_step() { run_check("run-time"); }
+void FixTdemTimestep::end_of_step() {
+  const bool periodic = opt_.every > 0 && update->ntimestep % opt_.every == 0;
+  if (opt_.check != th::CheckMode::off && (watch_every_step_ || periodic)) lost_check();
+  if (periodic) run_check("run-time");
+}
 
 double FixTdemTimestep::compute_vector(int n) {
   if (update->ntimestep != last_step_) run_check(nullptr);

@@ -46,6 +46,13 @@ class FixTdemTimestep : public Fix {
   double vec_[3];
   bool runtime_warned_;
   bigint last_step_;
+  // LIGGGHTS deletes atoms that leave the box without an error (thermo_modify lost ignore): the
+  // fix counts the group at set-up and, when the step is beyond the stop fraction of dt_c, every
+  // step (else at the run-time check), and stops with the advice once atoms are gone
+  bigint natoms_;
+  bool watch_every_step_;
+  std::string unstable_;
+  void lost_check();
 
   void build_rows(double v_setup);
   void type_minima(int mask, std::vector<double>& mmin, std::vector<double>& rmin, std::vector<double>& rhomin);

@@ -234,7 +234,10 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
       error->all(FLERR, where + ": keyword 'frame' = 'xyz' is not allowed with dimension 2; "
                                 "allowed: xy");
     gp.frame = tg::Frame::xy;
-  } else if (!frame_given) {
+  } else if (frame_given && gp.frame == tg::Frame::xy) {
+    // the 2D frame has up +y and no depth: in a 3-d box the bed would fall along -z past the bars
+    error->all(FLERR, where + ": keyword 'frame' = 'xy' (2D) needs 'dimension 2'; allowed in 3D: frame xyz");
+  } else {
     gp.frame = tg::Frame::xyz;
   }
 

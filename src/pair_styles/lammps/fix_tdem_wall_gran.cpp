@@ -70,6 +70,8 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
                             std::to_string(narg - iarg - 1));
     if (strcmp(arg[iarg + 1], "NULL") != 0) lo = wall_number(lmp, where, ws + " lo", arg[iarg + 1]);
     if (strcmp(arg[iarg + 2], "NULL") != 0) hi = wall_number(lmp, where, ws + " hi", arg[iarg + 2]);
+    if (lo == -BIG && hi == BIG)
+      error->all(FLERR, where + ": wall style " + ws + " NULL NULL gives no wall; give lo, hi or both");
     if (!(lo < hi))
       error->all(FLERR, where + ": " + ws + " lo = " + arg[iarg + 1] + " must be below hi = " +
                             arg[iarg + 2]);
@@ -334,6 +336,8 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
       tdem_lammps::clear_law_history(shear, size_history);
       continue;
     }
+    // a centre on the wall surface has no normal: stop with the atom ID instead of NaN forces
+    if (__builtin_expect(rsq == 0.0, 0)) centre_on_wall(i);
 
     double meff = rmass[i];
     if (fix_rigid && mass_rigid[i] > 0.0) meff = mass_rigid[i];
@@ -382,6 +386,15 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     torque[i][1] -= rad * tor2;
     torque[i][2] -= rad * tor3;
   }
+}
+
+void FixTDEMWallGran::centre_on_wall(int i) {
+  static const char *const names[] = {"xplane", "yplane", "zplane", "zcylinder"};
+  error->one(FLERR, std::string("fix ") + id + " tdem/wall/gran: atom " +
+                        std::to_string(static_cast<long long>(atom->tag[i])) + " has its centre on the " +
+                        names[wallstyle] + " wall (distance 0) at step " +
+                        std::to_string(static_cast<long long>(update->ntimestep)) +
+                        ": the contact normal is undefined; place the particle off the wall");
 }
 
 void FixTDEMWallGran::post_force_respa(int vflag, int ilevel, int /*iloop*/)

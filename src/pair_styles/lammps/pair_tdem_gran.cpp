@@ -283,6 +283,8 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         tdem_lammps::clear_law_history(shear, hsize);
         continue;
       }
+      // coincident centres have no normal: stop with the two atom IDs instead of NaN forces
+      if (__builtin_expect(rsq == 0.0, 0)) coincident_centres(i, j);
 
       const double r = sqrt(rsq);
       const double rinv = 1.0 / r;
@@ -661,6 +663,7 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
   for (int m = 0; m < single_extra; m++) svector[m] = 0.0;
   fforce = 0.0;
   if (rsq >= radsum * radsum) return 0.0;
+  if (rsq == 0.0) coincident_centres(i, j);
 
   double **x = atom->x;
   double **v = atom->v;
@@ -793,6 +796,14 @@ void PairTDEMGran::transfer_history(TDEM_LMP_TRANSFER_HISTORY_PARAMS(source, tar
   for (int m = 0; m < nt && m < size_history; m++)
     target[m] = tdem_lammps::tangential_slot_flips(utlaw, m) ? -source[m] : source[m];
   for (int m = nt; m < size_history; m++) target[m] = source[m];
+}
+
+void PairTDEMGran::coincident_centres(int i, int j) {
+  error->one(FLERR, "pair tdem/gran: atoms " + std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
+                        std::to_string(static_cast<long long>(atom->tag[j])) +
+                        " have coincident centres (distance 0) at step " +
+                        std::to_string(static_cast<long long>(update->ntimestep)) +
+                        ": the contact normal is undefined; place the particles apart (e.g. delete_atoms overlap)");
 }
 
 void PairTDEMGran::reset_dt()

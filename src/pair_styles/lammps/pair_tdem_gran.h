@@ -71,6 +71,9 @@ class PairTDEMGran : public Pair {
   int tangential_law() const { return utlaw; }
 
  protected:
+  // error->one naming two atoms whose centres coincide (no contact normal); out of line and cold
+  [[noreturn]] void coincident_centres(int i, int j);
+
   double dt;
   int freeze_group_bit;
   int size_history;

@@ -2,10 +2,12 @@
 // tdem for LAMMPS: argument parsing of the normal and tangential laws (pair_coeff, wall fix).
 #include "tdem_lammps_law.h"
 
+#include "comm.h"
 #include "error.h"
 #include "lammps.h"
 
 #include "contact/tangential/parameters.h"
+#include "contact/usual_ranges.h"
 
 #include <cerrno>
 #include <cmath>
@@ -62,6 +64,11 @@ int available(int narg, char **arg, int iarg) {
   return n;
 }
 
+// a warning (rank 0) for a value outside its usual range (tdem::usual)
+void unusual(LAMMPS *lmp, const std::string &where, const std::string &prefix, const std::string &text) {
+  if (!text.empty() && lmp->comm->me == 0) lmp->error->warning(FLERR, where + ": " + prefix + text);
+}
+
 void positive(LAMMPS *lmp, const std::string &where, const std::string &name, double v) {
   if (!(v > 0.0)) fail(lmp, where, name + " = " + num(v) + " must be > 0");
 }
@@ -73,6 +80,7 @@ double poisson(LAMMPS *lmp, const std::string &where, const std::string &name, c
   const double nu = number(lmp, where, name, text);
   if (!(nu > -1.0 && nu <= 0.5))
     fail(lmp, where, name + " = " + num(nu) + " is outside the allowed range (-1, 0.5]");
+  unusual(lmp, where, name + ": ", tdem::usual::poisson(nu));
   return nu;
 }
 
@@ -368,6 +376,9 @@ int parse_tangential(LAMMPS *lmp, const std::string &where, const std::string &n
     fail(lmp, where, "tangential law '" + name + "' is unknown; allowed: " + TANGENTIAL_LAWS);
   }
   non_negative(lmp, where, t + "MU (friction coefficient)", c.t_mu);
+  unusual(lmp, where, t, tdem::usual::friction(c.t_mu));
+  if (c.tlaw == TLAW_LINEAR_SPRING || c.tlaw == TLAW_WALTON_BRAUN)
+    unusual(lmp, where, t, tdem::usual::stiffness_ratio(c.t_kappa));
   return iarg + n;
 }
 }  // namespace
@@ -493,6 +504,18 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
     positive(lmp, where, "tangential cundall_strack KAPPA (kt/kn)", c.kappa);
     non_negative(lmp, where, "tangential cundall_strack MU", c.mu);
     iarg += 2;
+    // a third number: the KT GAMMAT MU form of normal lsd stiffness, read here as KAPPA MU
+    if (available(narg, arg, iarg) > 0) {
+      char *end = nullptr;
+      strtod(arg[iarg], &end);
+      if (end != arg[iarg] && *end == '\0')
+        fail(lmp, where,
+             std::string("tangential cundall_strack takes 2 values (KAPPA MU) with this normal law, but a third "
+                         "number '") + arg[iarg] + "' follows '" + arg[iarg - 2] + " " + arg[iarg - 1] +
+                 "'; 'KT GAMMAT MU' is the form for 'normal lsd stiffness' only");
+    }
+    unusual(lmp, where, "tangential cundall_strack ", tdem::usual::stiffness_ratio(c.kappa));
+    unusual(lmp, where, "tangential cundall_strack ", tdem::usual::friction(c.mu));
   } else {
     need(lmp, where, "tangential cundall_strack (with normal lsd stiffness)", "KT GAMMAT MU",
          available(narg, arg, iarg), 3);
@@ -503,6 +526,8 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
     non_negative(lmp, where, "tangential cundall_strack GAMMAT", c.gammat);
     non_negative(lmp, where, "tangential cundall_strack MU", c.mu);
     iarg += 3;
+    unusual(lmp, where, "tangential cundall_strack ", tdem::usual::friction(c.mu));
+    if (c.kn > 0.0) unusual(lmp, where, "tangential cundall_strack ", tdem::usual::stiffness_ratio(c.kt / c.kn));
   }
 
   // ---- options

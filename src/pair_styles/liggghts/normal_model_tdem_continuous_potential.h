@@ -21,6 +21,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/continuous_potential.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -37,7 +38,7 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
   ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_on_off(settings, "model tdem/continuous_potential", "limitForce", limit_force_, false);
+    tdem::liggghts::register_on_off(lmp, settings, "model tdem/continuous_potential", "limitForce", limit_force_, false);
   }
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
 
@@ -46,8 +47,8 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
     if (force->cg_active())
       error->all(FLERR, "model tdem/continuous_potential does not support coarse-graining (cg factor != 1)");
     end_ = limit_force_ ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     double **eps = nullptr, **expo = nullptr, **gamma = nullptr, **kappa = nullptr;
     registry.registerProperty(tdem::liggghts::kPropPotentialEnergy, &tdem::liggghts::create_potential_energy);
     registry.registerProperty(tdem::liggghts::kPropPotentialExponent, &tdem::liggghts::create_potential_exponent);
@@ -72,6 +73,8 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
 
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/continuous_potential", sidata.i, sidata.j, sidata.is_wall);
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     const double d = sidata.is_wall ? sidata.radi : sidata.radi + sidata.radj;
     const tdem::continuous_potential::Params<double> p{pc.eps, d, pc.n, d, pc.gamma};

@@ -29,6 +29,7 @@
 #include "contact/normal/extended.h"
 #include "tdem_liggghts_fits.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -51,9 +52,9 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
   ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_enum(settings, "model tdem/extended_hertz", "restitutionFit", e_form_,
+    tdem::liggghts::register_enum(lmp, settings, "model tdem/extended_hertz", "restitutionFit", e_form_,
                                   tdem::liggghts::restitution_fit_words(), 1);
-    tdem::liggghts::register_on_off(settings, "model tdem/extended_hertz", "limitForce", limit_force_, false);
+    tdem::liggghts::register_on_off(lmp, settings, "model tdem/extended_hertz", "limitForce", limit_force_, false);
   }
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
 
@@ -63,8 +64,8 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
       error->all(FLERR, "model tdem/extended_hertz does not support coarse-graining (cg factor != 1)");
     end_ = limit_force_ ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
     const tdem::fits::Form ef = tdem::liggghts::restitution_form(e_form_);
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     double **yeff = nullptr, **kappa = nullptr;
     registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff);
     registry.connect("Yeff", yeff, caller);
@@ -95,6 +96,8 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
 
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/extended_hertz", sidata.i, sidata.j, sidata.is_wall);
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
     tdem::extended::HertzParams p = pc.p;

@@ -28,6 +28,7 @@
 #include "contact/normal/extended.h"
 #include "tdem_liggghts_fits.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -51,11 +52,11 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
   ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_enum(settings, "model tdem/extended_linear", "restitutionFit", e_form_,
+    tdem::liggghts::register_enum(lmp, settings, "model tdem/extended_linear", "restitutionFit", e_form_,
                                   tdem::liggghts::restitution_fit_words(), 1);
-    tdem::liggghts::register_enum(settings, "model tdem/extended_linear", "contactTimeFit", tc_form_,
+    tdem::liggghts::register_enum(lmp, settings, "model tdem/extended_linear", "contactTimeFit", tc_form_,
                                   tdem::liggghts::contact_time_fit_words(), 1);
-    tdem::liggghts::register_on_off(settings, "model tdem/extended_linear", "limitForce", limit_force_, false);
+    tdem::liggghts::register_on_off(lmp, settings, "model tdem/extended_linear", "limitForce", limit_force_, false);
   }
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
 
@@ -66,8 +67,8 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
     end_ = limit_force_ ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
     const tdem::fits::Form ef = tdem::liggghts::restitution_form(e_form_);
     const tdem::fits::Form tf = tdem::liggghts::contact_time_form(tc_form_);
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     const tdem::liggghts::FitMatrices em = tdem::liggghts::connect_restitution_fit(registry, ef, caller);
     const tdem::liggghts::FitMatrices tm = tdem::liggghts::connect_contact_time_fit(registry, tf, caller);
     const tdem::fits::Range range = tdem::liggghts::connect_range(lmp, registry, caller);
@@ -95,6 +96,8 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
 
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/extended_linear", sidata.i, sidata.j, sidata.is_wall);
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double* const hist = &sidata.contact_history[history_offset_];
     tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, tdem::extended::linear_history_size,

@@ -28,6 +28,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/hertz_damped.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -46,9 +47,9 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
   ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_enum(settings, "model tdem/hertz", "damping", damping_word_,
+    tdem::liggghts::register_enum(lmp, settings, "model tdem/hertz", "damping", damping_word_,
                                   {"linear", "kuwabara_kono", "tsuji", "general"}, TSUJI);
-    tdem::liggghts::register_on_off(settings, "model tdem/hertz", "limitForce", limit_force_, false);
+    tdem::liggghts::register_on_off(lmp, settings, "model tdem/hertz", "limitForce", limit_force_, false);
   }
 
   void postSettings(IContactHistorySetup*, ContactModelBase*) {
@@ -63,8 +64,8 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
     if (force->cg_active())
       error->all(FLERR, "model tdem/hertz does not support coarse-graining (cg factor != 1)");
     postSettings(nullptr, nullptr);
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     double **yeff = nullptr, **kappa = nullptr, **e = nullptr, **c = nullptr, **theta = nullptr;
     registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff);
     registry.registerProperty(tdem::liggghts::kPropStiffnessRatio, &tdem::liggghts::create_stiffness_ratio);
@@ -110,6 +111,8 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
 
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/hertz", sidata.i, sidata.j, sidata.is_wall);
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
     const tdem::hertz::Params<double> p{pc.k_per_sqrt_r * std::sqrt(reff), pc.damp, pc.theta};

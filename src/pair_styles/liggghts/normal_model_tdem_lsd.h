@@ -37,6 +37,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/linear_viscoelastic.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
@@ -55,11 +56,11 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
   ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_enum(settings, "model tdem/lsd", "parameters", parameters_, {"stiffness", "restitution", "material"},
+    tdem::liggghts::register_enum(lmp, settings, "model tdem/lsd", "parameters", parameters_, {"stiffness", "restitution", "material"},
                                   STIFFNESS);
-    tdem::liggghts::register_on_off(settings, "model tdem/lsd", "tangential_damping", tangential_damping_, true);
-    tdem::liggghts::register_on_off(settings, "model tdem/lsd", "absolute_damping", absolute_damping_, false);
-    tdem::liggghts::register_on_off(settings, "model tdem/lsd", "limitForce", limit_force_, false);
+    tdem::liggghts::register_on_off(lmp, settings, "model tdem/lsd", "tangential_damping", tangential_damping_, true);
+    tdem::liggghts::register_on_off(lmp, settings, "model tdem/lsd", "absolute_damping", absolute_damping_, false);
+    tdem::liggghts::register_on_off(lmp, settings, "model tdem/lsd", "limitForce", limit_force_, false);
   }
 
   void postSettings(IContactHistorySetup*, ContactModelBase*) {
@@ -73,8 +74,8 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
     static const char* caller = "model tdem/lsd";
     if (force->cg_active())
       error->all(FLERR, "model tdem/lsd does not support coarse-graining (cg factor != 1)");
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     end_ = limit_force_ ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
 
     if (parameters_ == STIFFNESS) {
@@ -181,6 +182,8 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces,
                                 ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/lsd", sidata.i, sidata.j, sidata.is_wall);
     const double meff = sidata.meff;
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double kn = pc.kn, kt = pc.kt, gamman = pc.gamman, gammat = pc.gammat;

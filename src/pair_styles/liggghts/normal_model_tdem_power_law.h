@@ -26,6 +26,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/power_law_hysteresis.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 
@@ -53,8 +54,8 @@ class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
     static const char* caller = "model tdem/power_law";
     if (force->cg_active())
       error->all(FLERR, "model tdem/power_law does not support coarse-graining (cg factor != 1)");
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     double **al = nullptr, **p = nullptr, **aul = nullptr, **q = nullptr, **kappa = nullptr;
     registry.registerProperty(tdem::liggghts::kPropLoadingCoefficient, &tdem::liggghts::create_loading_coefficient);
     registry.registerProperty(tdem::liggghts::kPropLoadingExponent, &tdem::liggghts::create_loading_exponent);
@@ -88,6 +89,8 @@ class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
 
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/power_law", sidata.i, sidata.j, sidata.is_wall);
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double* const hist = &sidata.contact_history[history_offset_];
     tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, tdem::power_law::history_size,

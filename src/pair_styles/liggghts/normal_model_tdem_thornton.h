@@ -22,6 +22,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/thornton.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 
@@ -49,8 +50,8 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
     static const char* caller = "model tdem/thornton";
     if (force->cg_active())
       error->all(FLERR, "model tdem/thornton does not support coarse-graining (cg factor != 1)");
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     double **yeff = nullptr, **py = nullptr, **kappa = nullptr;
     registry.registerProperty("Yeff", &MODEL_PARAMS::createYeff);
     registry.registerProperty(tdem::liggghts::kPropYieldPressure, &tdem::liggghts::create_yield_pressure);
@@ -72,6 +73,8 @@ class NormalModel<TDEM_THORNTON> : public NormalModelBase {
 
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/thornton", sidata.i, sidata.j, sidata.is_wall);
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     const double reff = sidata.is_wall ? sidata.radi : (sidata.radi * sidata.radj / (sidata.radi + sidata.radj));
     double* const hist = &sidata.contact_history[history_offset_];

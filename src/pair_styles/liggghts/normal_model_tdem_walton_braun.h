@@ -23,6 +23,7 @@
 #include "tdem_liggghts_apply.h"
 #include "contact/normal/walton_braun.h"
 #include "tdem_liggghts_advice.h"
+#include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
 #include "tdem_liggghts_properties.h"
 
@@ -47,8 +48,8 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
     static const char* caller = "model tdem/walton_braun";
     if (force->cg_active())
       error->all(FLERR, "model tdem/walton_braun does not support coarse-graining (cg factor != 1)");
-    const int n = atom->ntypes;
-    coef_.resize(n);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    coef_.resize(atom->ntypes);
     double **kl = nullptr, **ku = nullptr, **s = nullptr, **kappa = nullptr;
     registry.registerProperty(tdem::liggghts::kPropLoadingStiffness, &tdem::liggghts::create_loading_stiffness);
     registry.registerProperty(tdem::liggghts::kPropUnloadingStiffness, &tdem::liggghts::create_unloading_stiffness);
@@ -79,6 +80,8 @@ class NormalModel<TDEM_WALTON_BRAUN> : public NormalModelBase {
 
   inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
+    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
+      tdem::liggghts::zero_distance(lmp, "model tdem/walton_braun", sidata.i, sidata.j, sidata.is_wall);
     const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
     double* const hist = &sidata.contact_history[history_offset_];
     tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, 1,

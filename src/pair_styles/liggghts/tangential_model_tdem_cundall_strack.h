@@ -25,6 +25,7 @@
 #include "contact/tangential/cundall_strack.h"
 #include "tdem_liggghts_error.h"
 #include "tdem_liggghts_ids.h"
+#include "contact/usual_ranges.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
 
@@ -47,7 +48,7 @@ class TangentialModel<TDEM_CUNDALL_STRACK> : public TangentialModelBase {
   }
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_enum(settings, "tangential tdem/cundall_strack", "slip_rule", rule_, {"spring", "spring_dashpot"}, SPRING);
+    tdem::liggghts::register_enum(lmp, settings, "tangential tdem/cundall_strack", "slip_rule", rule_, {"spring", "spring_dashpot"}, SPRING);
   }
 
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
@@ -55,8 +56,10 @@ class TangentialModel<TDEM_CUNDALL_STRACK> : public TangentialModelBase {
   void connectToProperties(PropertyRegistry& registry) {
     registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
     registry.connect("coeffFrict", coeff_frict_, "tangential tdem/cundall_strack");
-    tdem::liggghts::check_matrix(lmp, coeff_frict_, atom->ntypes, "coefficientFriction",
-                                 "tangential tdem/cundall_strack", 1);
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
+    tdem::liggghts::check_matrix(lmp, coeff_frict_, n, "coefficientFriction", "tangential tdem/cundall_strack", 1);
+    tdem::liggghts::warn_unusual(lmp, coeff_frict_, n, "coefficientFriction", "tangential tdem/cundall_strack",
+                                 &tdem::usual::friction);
   }
 
   inline void surfacesIntersect(const SurfacesIntersectData& sidata, ForceData& i_forces,

@@ -47,6 +47,7 @@
 #include "contact/tangential/mindlin_no_slip.h"
 #include "contact/tangential/walton_braun_tangential.h"
 #include "tdem_liggghts_ids.h"
+#include "contact/usual_ranges.h"
 #include "tdem_liggghts_properties.h"
 #include "tdem_liggghts_settings.h"
 
@@ -194,18 +195,19 @@ class TdemTangentialAdapter : public TangentialModelBase {
   }
 
   void registerSettings(Settings& settings) {
-    tdem::liggghts::register_enum(settings, Law::caller, "frictionLimit", limit_, {"absolute", "positive_normal"}, 0);
+    tdem::liggghts::register_enum(lmp, settings, Law::caller, "frictionLimit", limit_, {"absolute", "positive_normal"}, 0);
     if (Law::reset)
-      tdem::liggghts::register_enum(settings, Law::caller, "slipReset", reset_, {"spring_only", "spring_and_dashpot"}, 0);
+      tdem::liggghts::register_enum(lmp, settings, Law::caller, "slipReset", reset_, {"spring_only", "spring_and_dashpot"}, 0);
   }
 
   void postSettings(IContactHistorySetup*, ContactModelBase*) {}
 
   void connectToProperties(PropertyRegistry& registry) {
-    const int n = atom->ntypes;
+    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
     registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
     registry.connect("coeffFrict", mu_, Law::caller);
     tdem::liggghts::check_matrix(lmp, mu_, n, "coefficientFriction", Law::caller, 1);
+    tdem::liggghts::warn_unusual(lmp, mu_, n, "coefficientFriction", Law::caller, &tdem::usual::friction);
     if (Law::damping) {
       registry.registerProperty(tdem::liggghts::kPropTangentialDampingRatio, &tdem::liggghts::create_tangential_damping_ratio);
       registry.connect(tdem::liggghts::kPropTangentialDampingRatio, ratio_, Law::caller);

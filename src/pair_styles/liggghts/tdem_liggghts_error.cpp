@@ -6,8 +6,10 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "atom.h"
 #include "error.h"
 #include "lammps.h"
+#include "update.h"
 
 namespace tdem {
 namespace liggghts {
@@ -25,6 +27,19 @@ void error_one(LAMMPS_NS::LAMMPS* lmp, const char* file, int line, const std::st
   }
   lmp->error->one(file, line, msg.c_str());
   std::abort();  // not reached: error->one aborts
+}
+
+void zero_distance(LAMMPS_NS::LAMMPS* lmp, const char* model, int i, int j, bool wall) {
+  const auto tag = [lmp](int k) { return std::to_string(static_cast<long long>(lmp->atom->tag[k])); };
+  const std::string step = std::to_string(static_cast<long long>(lmp->update->ntimestep));
+  if (wall)
+    error_one(lmp, __FILE__, __LINE__,
+              std::string(model) + ": atom " + tag(i) + " has its centre on a wall surface (distance 0) at step " +
+                  step + ": the contact normal is undefined; place the particle off the wall");
+  error_one(lmp, __FILE__, __LINE__,
+            std::string(model) + ": atoms " + tag(i) + " and " + tag(j) +
+                " have coincident centres (distance 0) at step " + step +
+                ": the contact normal is undefined; place the particles apart (e.g. delete_atoms overlap)");
 }
 
 }  // namespace liggghts

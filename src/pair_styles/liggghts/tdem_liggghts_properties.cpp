@@ -4,8 +4,12 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <set>
 #include <string>
 
+#include "contact/usual_ranges.h"
+
+#include "comm.h"
 #include "error.h"
 #include "fix_property_global.h"
 #include "lammps.h"
@@ -137,7 +141,10 @@ MatrixProperty* create_contact_time(PropertyRegistry& registry, const char* call
   return create_checked(registry, "contactTime", caller, Range::positive);
 }
 MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "tangentialStiffnessRatio", caller, Range::non_negative);
+  MatrixProperty* m = create_checked(registry, "tangentialStiffnessRatio", caller, Range::non_negative);
+  warn_unusual(registry.getLAMMPS(), m->data, registry.max_type(), "tangentialStiffnessRatio", caller,
+               &tdem::usual::stiffness_ratio);
+  return m;
 }
 
 MatrixProperty* create_tangential_damping_ratio(PropertyRegistry& registry, const char* caller, bool) {
@@ -166,6 +173,21 @@ MatrixProperty* create_potential_energy(PropertyRegistry& registry, const char* 
 }
 MatrixProperty* create_potential_exponent(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked(registry, "potentialExponent", caller, Range::positive);
+}
+
+void warn_unusual(LAMMPS_NS::LAMMPS* lmp, double** m, int ntypes, const char* fix_name, const char* caller,
+                  std::string (*unusual)(double)) {
+  // LIGGGHTS connects the tables at every init (every run): warn once per message
+  static std::set<std::string> said;
+  if (lmp->comm->me != 0) return;
+  for (int i = 1; i <= ntypes; ++i)
+    for (int j = i; j <= ntypes; ++j) {
+      const std::string text = unusual(m[i][j]);
+      if (text.empty()) continue;
+      const std::string msg = std::string(caller) + ": fix property/global " + fix_name + " for atom types " +
+                              std::to_string(i) + " " + std::to_string(j) + ": " + text;
+      if (said.insert(msg).second) lmp->error->warning(FLERR, msg.c_str());
+    }
 }
 
 void check_matrix(LAMMPS_NS::LAMMPS* lmp, double** m, int ntypes, const char* fix_name,

@@ -62,10 +62,21 @@ ScalarProperty* create_impact_velocity_max(PropertyRegistry& registry, const cha
 // Is there a `fix property/global <fix_name> scalar ...`? (Optional scalar properties.)
 bool has_scalar_property(LAMMPS_NS::LAMMPS* lmp, const char* fix_name, const char* caller);
 
+// The atom types whose rows LIGGGHTS fills in the tables of a PropertyRegistry: the largest type
+// present in atoms, insertions and walls (Properties::max_type), not the create_box count. A table
+// connected in this init has exactly these rows; a type that appears later (create_atoms, set type,
+// fix pour) comes with a new init and new tables. Read no table beyond this.
+inline int table_types(PropertyRegistry& registry) { return registry.max_type(); }
+
 // error->all unless the range check holds for every type pair 1..ntypes of a connected matrix.
 // kind: 0 -> value > 0, 1 -> value >= 0. `fix_name` is the fix property/global name.
 void check_matrix(LAMMPS_NS::LAMMPS* lmp, double** m, int ntypes, const char* fix_name,
                   const char* caller, int kind);
+
+// A warning (rank 0, once per message and process) for every type pair whose value is outside
+// its usual range: `unusual` is one of tdem::usual (src/contact/usual_ranges.h).
+void warn_unusual(LAMMPS_NS::LAMMPS* lmp, double** m, int ntypes, const char* fix_name, const char* caller,
+                  std::string (*unusual)(double));
 
 // A dense (ntypes+1)^2 table of per-type-pair values, indexed by LIGGGHTS atom types.
 template <class V>

@@ -4,6 +4,9 @@
 #include <map>
 #include <sstream>
 
+#include "input.h"
+#include "lammps.h"
+
 namespace {
 
 // Settings keeps its keyword table in a private member and has no public way to add an
@@ -21,17 +24,28 @@ struct Grant {
 };
 template struct Grant<SettingTableTag, &Settings::settings>;
 
+// True if the keyword at args[0] has no value after it: args[1] is null, or args lies in the
+// argument array of the command being read and args[0] is its last element. Arrays built by
+// other code (restart, fixes that create fixes) are null-terminated or complete.
+bool value_missing(LAMMPS_NS::LAMMPS* lmp, char** args) {
+  if (args[1] == nullptr) return true;
+  const LAMMPS_NS::Input* in = lmp ? lmp->input : nullptr;
+  if (!in || !in->arg || in->narg <= 0) return false;
+  if (args < in->arg || args >= in->arg + in->narg) return false;
+  return args + 1 >= in->arg + in->narg;
+}
+
 class WordSetting : public EnumSetting<int> {
  public:
-  WordSetting(const std::string& owner, const std::string& name, const std::vector<std::string>& words,
-              int default_index)
-      : EnumSetting<int>(name), owner_(owner), words_(words) {
+  WordSetting(LAMMPS_NS::LAMMPS* lmp, const std::string& owner, const std::string& name,
+              const std::vector<std::string>& words, int default_index)
+      : EnumSetting<int>(name), lmp_(lmp), owner_(owner), words_(words) {
     for (size_t i = 0; i < words.size(); ++i) addOption(words[i], static_cast<int>(i));
     setDefault(words.at(default_index));
   }
   int parseArguments(char** args) override {
     if (name != args[0]) return 0;
-    if (args[1] == nullptr) {
+    if (value_missing(lmp_, args)) {
       error_message = owner_ + ": keyword '" + name + "' needs a value; allowed: " + allowed();
       return -1;
     }
@@ -48,6 +62,7 @@ class WordSetting : public EnumSetting<int> {
     for (size_t i = 0; i < words_.size(); ++i) s += (i ? " | " : "") + words_[i];
     return s;
   }
+  LAMMPS_NS::LAMMPS* lmp_;
   std::string owner_;
   std::vector<std::string> words_;
 };
@@ -56,11 +71,11 @@ class WordSetting : public EnumSetting<int> {
 // so a LIGGGHTS model that registers the same keyword with Settings::registerOnOff shares it.
 class OnOffWords : public OnOffSetting {
  public:
-  OnOffWords(const std::string& owner, const std::string& name, bool default_value)
-      : OnOffSetting(name, default_value), owner_(owner) {}
+  OnOffWords(LAMMPS_NS::LAMMPS* lmp, const std::string& owner, const std::string& name, bool default_value)
+      : OnOffSetting(name, default_value), lmp_(lmp), owner_(owner) {}
   int parseArguments(char** args) override {
     if (name != args[0]) return 0;
-    if (args[1] == nullptr) {
+    if (value_missing(lmp_, args)) {
       error_message = owner_ + ": keyword '" + name + "' needs a value; allowed: off | on";
       return -1;
     }
@@ -72,6 +87,7 @@ class OnOffWords : public OnOffSetting {
   }
 
  private:
+  LAMMPS_NS::LAMMPS* lmp_;
   std::string owner_;
 };
 
@@ -80,18 +96,18 @@ class OnOffWords : public OnOffSetting {
 namespace tdem {
 namespace liggghts {
 
-void register_enum(Settings& settings, const std::string& owner, const std::string& name,
+void register_enum(LAMMPS_NS::LAMMPS* lmp, Settings& settings, const std::string& owner, const std::string& name,
                    int& target, const std::vector<std::string>& words, int default_index) {
   SettingTable& table = settings.*member(SettingTableTag{});
   auto it = table.find(name);
-  if (it == table.end()) it = table.emplace(name, new WordSetting(owner, name, words, default_index)).first;
+  if (it == table.end()) it = table.emplace(name, new WordSetting(lmp, owner, name, words, default_index)).first;
   if (auto* s = dynamic_cast<WordSetting*>(it->second)) s->registerTarget(target);
 }
 
-void register_on_off(Settings& settings, const std::string& owner, const std::string& name,
+void register_on_off(LAMMPS_NS::LAMMPS* lmp, Settings& settings, const std::string& owner, const std::string& name,
                      bool& target, bool default_value) {
   SettingTable& table = settings.*member(SettingTableTag{});
-  if (table.find(name) == table.end()) table.emplace(name, new OnOffWords(owner, name, default_value));
+  if (table.find(name) == table.end()) table.emplace(name, new OnOffWords(lmp, owner, name, default_value));
   settings.registerOnOff(name, target, default_value);
 }
 

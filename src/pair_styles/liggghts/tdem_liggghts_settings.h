@@ -13,17 +13,26 @@
 
 #include "settings.h"
 
+namespace LAMMPS_NS {
+class LAMMPS;
+}
+
 namespace tdem {
 namespace liggghts {
 
 // Registers keyword `name` of the model `owner` (e.g. "model tdem/lsd") taking one of `words`; `target` receives the index of the chosen
 // word (default_index if the keyword is not given).
-void register_enum(Settings& settings, const std::string& owner, const std::string& name,
+//
+// LIGGGHTS hands a setting only the argument pointer, not the count, and its command argument
+// arrays are not terminated: a keyword given last without its value would read a stale pointer
+// of an earlier command. `lmp` lets the setting find the end of the command's arguments
+// (Input::arg / Input::narg) and report the value as missing instead.
+void register_enum(LAMMPS_NS::LAMMPS* lmp, Settings& settings, const std::string& owner, const std::string& name,
                    int& target, const std::vector<std::string>& words, int default_index);
 
 // Registers an on/off keyword like Settings::registerOnOff (and shared with models that use
 // registerOnOff for the same keyword), with an error message that lists the allowed values.
-void register_on_off(Settings& settings, const std::string& owner, const std::string& name,
+void register_on_off(LAMMPS_NS::LAMMPS* lmp, Settings& settings, const std::string& owner, const std::string& name,
                      bool& target, bool default_value);
 
 }  // namespace liggghts

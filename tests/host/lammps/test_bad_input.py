@@ -253,6 +253,27 @@ CASES = [
      ["wiggle dimension 'q' is unknown; allowed: x, y, z"]),
 ]
 
+# issue 17: misread values, a wall that is no wall, distance-0 contacts (were NaN with exit 0)
+CASES += [
+    ("stiffness-form tangential after restitution",
+     pair("normal lsd restitution 0.7 2e-4 tangential cundall_strack 600 25 0.5"),
+     ["tangential cundall_strack takes 2 values (KAPPA MU) with this normal law, but a third number '0.5' "
+      "follows '600 25'", "'KT GAMMAT MU' is the form for 'normal lsd stiffness' only"]),
+    ("zplane NULL NULL", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane NULL NULL"),
+     ["wall style zplane NULL NULL gives no wall; give lo, hi or both"]),
+    ("yplane NULL NULL", pair(GOOD) + "\n" + WALL.format(law=GOODR, wall="yplane NULL NULL"),
+     ["wall style yplane NULL NULL gives no wall"]),
+    ("coincident centres", pair(GOOD) + "\nset atom 2 z 0.05",
+     ["pair tdem/gran: atoms 1 and 2 have coincident centres (distance 0) at step 0",
+      "the contact normal is undefined"]),
+    ("coincident centres hertz", pair(GOODH) + "\nset atom 2 z 0.05",
+     ["pair tdem/gran: atoms 1 and 2 have coincident centres (distance 0) at step 0"]),
+    ("centre on the wall", pair(GOOD) + "\n" + WALL.format(law=GOODH, wall="zplane 0.05 NULL"),
+     ["tdem/wall/gran: atom 1 has its centre on the zplane wall (distance 0) at step 0"]),
+    ("centre on the wall, upper", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="xplane NULL 0.05"),
+     ["tdem/wall/gran: atom 1 has its centre on the xplane wall (distance 0) at step 0"]),
+]
+
 wd = lc.workdir("bad")
 for k, (name, body, expect) in enumerate(CASES):
     rc, out = lc.run(args["tdem"], BASE.format(body=body), wd, "in.bad%02d" % k, check=False)
@@ -291,4 +312,20 @@ for name, body in (("good stiffness", pair(GOOD) + "\n" + WALL.format(law=GOOD, 
                     + GOODH.replace("2e8 0.3", "1e8 0.25") + "\n" + WALL.format(law=GOODH.replace("0.3", "0.3 1e9 0.2"), wall="zplane 0 NULL"))):
     rc, out = lc.run(args["tdem"], BASE.format(body=body).replace("0.05 0.05", "0 0"), wd, "in.good", check=False)
     chk.check(rc == 0 and "Loop time" in out, "control %s: runs (exit %d)" % (name, rc))
+
+# values far outside the usual physical range run, with a warning naming the value and the range
+for name, body, expect in (
+        ("kappa 600 and mu 25", pair("normal lsd restitution 0.7 2e-4 tangential cundall_strack 600 25"),
+         ["KAPPA = kt/kn = 600 is unusually large", "usual 0.2 .. 1.5", "MU = 25 is unusually large",
+          "granular materials: 0 .. 1.5"]),
+        ("stiffness form kt/kn 3", pair("normal lsd stiffness 2000 50 tangential cundall_strack 6000 25 0.5"),
+         ["KAPPA = kt/kn = 3 is unusually large"]),
+        ("mindlin mu 10", pair("normal hertz 2e8 0.3 tangential mindlin_deresiewicz 2e8 0.3 10"),
+         ["tangential mindlin_deresiewicz friction coefficient MU = 10 is unusually large"]),
+        ("negative poisson", pair("normal hertz 2e8 -0.5 tangential cundall_strack 0.8 0.5"),
+         ["Poisson ratio NU = -0.5 is negative"])):
+    rc, out = lc.run(args["tdem"], BASE.format(body=body).replace("0.05 0.05", "0 0"), wd, "in.unusual", check=False)
+    warn = [l for l in out.splitlines() if l.startswith("WARNING")]
+    chk.check(rc == 0 and "Loop time" in out and all(any(e in w for w in warn) for e in expect),
+              "unusual %s: runs (exit %d) and warns: %s" % (name, rc, " | ".join(w[:160] for w in warn) or "no warning"))
 chk.done()

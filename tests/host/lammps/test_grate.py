@@ -568,7 +568,7 @@ def part_bad_input():
         ("bar_length abc", ["bar_length", "abc", "not a finite number"]),
         ("foo 1", ["unknown keyword", "foo", "bar_length"]),
         ("side_walls maybe", ["side_walls", "maybe", "no, yes"]),
-        ("frame xy", ["side_walls", "xy"]),  # frame xy with side walls (added below)
+        ("frame xy", ["'frame' = 'xy'", "needs 'dimension 2'"]),  # in 3D, with side walls (added below)
     ]
     for extra, words in cases:
         g = dict(PAR_G)
@@ -593,6 +593,15 @@ def part_bad_input():
     err = [l for l in out.splitlines() if l.startswith("ERROR")]
     msg = err[0] if err else "(no error)"
     chk.check(rc != 0 and "frame" in msg and "xyz" in msg and "allowed: xy" in msg, "frame xyz in 2D -> %s" % msg)
+    # 3D refuses frame xy (it was accepted, and the bed then fell along -z past the bars: "Lost atoms")
+    g = dict(PAR_G)
+    g["side_walls"] = False
+    text = base + PAR_BODY.format(law=PAR_LAW, grate=grate_args(g, PAR_M) + " frame xy", fid="gr") + "run 10\n"
+    rc, out = lc.run(args["tdem"], text, wd, "in.xy3d", check=False)
+    err = [l for l in out.splitlines() if l.startswith("ERROR")]
+    msg = err[0] if err else "(no error)"
+    chk.check(rc != 0 and "'frame' = 'xy'" in msg and "needs 'dimension 2'" in msg and "allowed in 3D: frame xyz" in msg
+              and "Lost atoms" not in out, "frame xy in 3D -> %s" % msg)
 
 
 # ------------------------------------------------------------------ 6. 2D

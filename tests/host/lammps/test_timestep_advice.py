@@ -30,7 +30,9 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import lmp_common as lc  # noqa: E402
+import oscillator_ref as OR  # noqa: E402
 
 argv = list(sys.argv)
 part = "all"
@@ -407,8 +409,39 @@ def part_bad_input():
     chk.check(rc == 0, "control: every keyword with a good value runs")
 
 
+# ------------------------------------------------------------------ strong damping (issue 17)
+def part_overdamped():
+    """fix tdem/timestep over the whole damping range: velocity Verlet's critical step on the
+    damped oscillator is 2 (sqrt(1 + zeta^2) - zeta) / omega (w_c ~ 1/zeta); it reported 0 ("unstable
+    at every step") for zeta >~ 100 (e = 1e-5 with limit_force yes, issue 17)."""
+    atoms, vel, nt = two_spheres()
+    for z in (0.5, 2.0, 30.0, 158.0, 1e3, 1e4):
+        g = 2.0 * z * math.sqrt(K * MEFF)
+        _, out = lc.run(EXE, script(atoms, vel, nt, lsd_pair(K, g), 1e-9, "fix ts all tdem/timestep vmax 1",
+                                    body="run 0\n"), lc.workdir("ts_od"))
+        row = table_rows(out).get("pair_1_1")
+        dtc, zz, w = vv_critical(K, g, MEFF)
+        chk.check(row is not None and close(row["zeta"], z, 1e-9) and close(row["dt_critical"], dtc, 1e-7),
+                  "lsd stiffness zeta %g: dt_c %s vs closed form %.9g" % (z, row and row["dt_critical"], dtc))
+    # the reported case: restitution form, e = 1e-5 and 1e-3, zero-force end
+    tc = 1e-4
+    for e in (1e-5, 1e-3, 0.3):
+        z = OR.zeta_for_zero_force_e(e)
+        w = OR.zero_force_end(z)[1] / tc
+        dtc = 2.0 / w * (math.sqrt(1.0 + z * z) - z)
+        inter = ("pair_style tdem/gran\npair_coeff * * normal lsd restitution %r %r tangential cundall_strack 0.8 0.5 "
+                 "limit_force yes" % (e, tc))
+        rc, out = lc.run(EXE, script(atoms, vel, nt, inter, 1e-9, "fix ts all tdem/timestep vmax 1 check stop",
+                                     body="run 10\n"), lc.workdir("ts_od"), check=False)
+        row = table_rows(out).get("pair_1_1")
+        chk.check(rc == 0 and row is not None and close(row["zeta"], z, 1e-6) and close(row["dt_critical"], dtc, 1e-6)
+                  and "unstable at every step" not in out,
+                  "lsd restitution e %g limit_force yes: zeta %s vs %.9g, dt_c %s vs %.9g (exit %d)"
+                  % (e, row and row["zeta"], z, row and row["dt_critical"], dtc, rc))
+
+
 PARTS = {"acceptance": part_acceptance, "closed_forms": part_closed_forms, "check_modes": part_check_modes,
-         "runtime": part_runtime, "bad_input": part_bad_input}
+         "runtime": part_runtime, "bad_input": part_bad_input, "overdamped": part_overdamped}
 for name, f in PARTS.items():
     if part in ("all", name):
         f()

@@ -2,7 +2,8 @@
 # module 'timestep': fix tdem/timestep (src/advice/lammps), test_timestep_advice.py --part NAME
 if(TDEM_LAMMPS_TIMESTEP)
   foreach(_p acceptance:unstable_at_1_1_dt_c_stable_at_0_5 closed_forms:printed_advice_matches_closed_forms
-             check_modes:check_warn_stop_off runtime:runtime_check_on_raised_velocity bad_input:bad_input)
+             check_modes:check_warn_stop_off runtime:runtime_check_on_raised_velocity bad_input:bad_input
+             overdamped:overdamped_critical_step_closed_form)
     string(REPLACE ":" ";" _pp "${_p}")
     list(GET _pp 0 _part)
     list(GET _pp 1 _what)

@@ -41,6 +41,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import tdem_lig as T  # noqa: E402
 
 PART = ["all"]
@@ -645,9 +646,40 @@ def part_lsd_settings():
 
 
 
+# ------------------------------------------------------------------ strong damping (issue 17)
+def part_overdamped():
+    """Velocity Verlet's critical step 2 (sqrt(1 + zeta^2) - zeta) / omega over the whole damping
+    range; e = 1e-5 with limitForce on (zeta 158) was reported as "unstable at every step"."""
+    import oscillator_ref as OR
+    for z in (0.5, 2.0, 30.0, 158.0, 1e3, 1e4):
+        gn = 2.0 * z * math.sqrt(K * MEFF) / MEFF
+        rc, out = run(script(lsd_props(gn=gn), LSD_PAIR, 1e-9, two_spheres(), "fix ts all tdem/timestep vmax 1",
+                             "run 0\n"), "overdamped")
+        row = table_rows(out).get("pair_1_1")
+        dtc = vv_dtc(K, gn * MEFF, MEFF)
+        checks.check(rc == 0 and row is not None and close(row["dt_critical"], dtc, 1e-7),
+                     "tdem/lsd stiffness zeta %g: dt_c %s vs closed form %.9g" % (z, row and row["dt_critical"], dtc))
+    tc = 1e-4
+    for e in (1e-5, 1e-3, 0.3):
+        z = OR.zeta_for_zero_force_e(e)
+        w = OR.zero_force_end(z)[1] / tc
+        dtc = 2.0 / w * (math.sqrt(1.0 + z * z) - z)
+        props = lsd_props() + pp("coefficientRestitution", e) + pp("contactTime", tc) + \
+            pp("tangentialStiffnessRatio", 0.3)
+        inter = ("pair_style gran model tdem/lsd tangential tdem/cundall_strack parameters restitution limitForce on\n"
+                 "pair_coeff * *")
+        rc, out = run(script(props, inter, 1e-9, two_spheres(), "fix ts all tdem/timestep vmax 1 check stop",
+                             "run 10\n"), "overdamped")
+        row = table_rows(out).get("pair_1_1")
+        checks.check(rc == 0 and row is not None and close(row["zeta"], z, 1e-6) and close(row["dt_critical"], dtc, 1e-6)
+                     and "unstable at every step" not in out,
+                     "tdem/lsd restitution e %g limitForce on: zeta %s vs %.9g, dt_c %s vs %.9g (exit %d)"
+                     % (e, row and row["zeta"], z, row and row["dt_critical"], dtc, rc))
+
+
 PARTS = {"acceptance": part_acceptance, "closed_forms": part_closed_forms, "check_modes": part_check_modes,
          "runtime": part_runtime, "bad_input": part_bad_input, "tdem_laws": part_tdem_laws,
-         "lsd_settings": part_lsd_settings}
+         "lsd_settings": part_lsd_settings, "overdamped": part_overdamped}
 for name, f in PARTS.items():
     if args.part in ("all", name):
         f()

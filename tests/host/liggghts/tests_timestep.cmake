@@ -3,7 +3,8 @@
 if(TDEM_LIGGGHTS_TIMESTEP AND TARGET tdem-liggghts)
   foreach(_p acceptance:unstable_at_1_1_dt_c_stable_at_0_5 closed_forms:printed_advice_matches_closed_forms
              check_modes:check_warn_stop_off runtime:runtime_check_on_raised_velocity bad_input:bad_input
-             tdem_laws:six_published_laws_match_closed_forms lsd_settings:model_setting_in_use_is_advised)
+             tdem_laws:six_published_laws_match_closed_forms lsd_settings:model_setting_in_use_is_advised
+             overdamped:overdamped_critical_step_closed_form)
     string(REPLACE ":" ";" _pp "${_p}")
     list(GET _pp 0 _part)
     list(GET _pp 1 _what)
