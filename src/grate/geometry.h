@@ -98,8 +98,12 @@ inline Vec3 closest_point(const Box& b, Vec3 p) {
   return q;
 }
 
+// Size limit of the input (docs/limits.md): a grate of the dissertation has 5-20 rows; 1000 rows
+// already give 2 x 2.4 MB of STL bars in LIGGGHTS. Both hosts refuse more.
+inline constexpr int kMaxRows = 1000;
+
 struct GrateParams {
-  int rows = 6;                  // number of bar rows, >= 1
+  int rows = 6;                  // number of bar rows, 1 .. kMaxRows
   double bar_length = 0.2;       // along the bar axis e_t [m], > 0
   double bar_height = 0.05;      // along e_n [m], > 0
   double bar_thickness = 0.0;    // lateral size of one bar [m]; 0 or >= width: one bar spans the width

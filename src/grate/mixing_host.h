@@ -51,12 +51,17 @@ inline double parse_positive(const std::string& ctx, const std::string& kw, cons
   return v;
 }
 
-inline long parse_count(const std::string& ctx, const std::string& kw, const std::string& s) {
+// Size limits of the input (docs/limits.md). Bins: every rank holds 6 doubles per bin and a
+// snapshot writes a row per bin; 1e5 bins resolve a 10 m bed to 0.1 mm.
+inline constexpr long kMaxBins = 100000;
+inline constexpr long kMaxCount = 100000000L;  // every: steps between snapshots
+
+inline long parse_count(const std::string& ctx, const std::string& kw, const std::string& s, long max = kMaxCount) {
   errno = 0;
   char* end = nullptr;
   const long v = std::strtol(s.c_str(), &end, 10);
-  if (s.empty() || *end != '\0' || errno == ERANGE || v < 1 || v > 100000000L)
-    arg_error(ctx, kw, s, "an integer >= 1");
+  if (s.empty() || *end != '\0' || errno == ERANGE || v < 1 || v > max)
+    arg_error(ctx, kw, s, "an integer in [1, " + std::to_string(max) + "]");
   return v;
 }
 
@@ -88,7 +93,7 @@ inline std::size_t parse_bins(const std::vector<std::string>& a, std::size_t i, 
   b.lo = parse_number(ctx, "bins", need(a, i + 2, ctx, "bins", what), "a number (LO)");
   b.hi = parse_number(ctx, "bins", need(a, i + 3, ctx, "bins", what), "a number (HI)");
   if (!(b.hi > b.lo)) arg_error(ctx, "bins", a[i + 3], "HI > LO = " + a[i + 2]);
-  b.count = static_cast<int>(parse_count(ctx, "bins", need(a, i + 4, ctx, "bins", what)));
+  b.count = static_cast<int>(parse_count(ctx, "bins", need(a, i + 4, ctx, "bins", what), kMaxBins));
   return i + 5;
 }
 

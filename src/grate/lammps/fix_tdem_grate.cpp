@@ -115,9 +115,9 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
     else if (key == "phase") key = "group_phase";
     if (key == "rows") {
       const long v = integer(key, 1);
-      if (v < 1 || v > 100000)
-        error->all(FLERR, where + ": keyword 'rows' = " + arg[iarg + 1] +
-                              " is outside the allowed range [1, 100000]");
+      if (v < 1 || v > tg::kMaxRows)
+        error->all(FLERR, where + ": keyword 'rows' = " + arg[iarg + 1] + " is outside the allowed range [1, " +
+                              std::to_string(tg::kMaxRows) + "]");
       gp.rows = static_cast<int>(v);
       iarg += 2;
     } else if (key == "bar_length") {

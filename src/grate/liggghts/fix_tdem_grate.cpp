@@ -108,8 +108,11 @@ FixTdemGrate::FixTdemGrate(LAMMPS* lmp, int narg, char** arg) : Fix(lmp, narg, a
   while (iarg < narg) {
     const std::string key = arg[iarg];
     if (key == "rows") {
-      need(iarg, 1, key, "a value (integer >= 1)");
+      need(iarg, 1, key, "a value (integer in [1, " + std::to_string(tg::kMaxRows) + "])");
       p.rows = integer(iarg + 1, key, "integers >= 1");
+      if (p.rows < 1 || p.rows > tg::kMaxRows)
+        fail("keyword 'rows' = '" + std::string(arg[iarg + 1]) + "' is outside the allowed range [1, " +
+             std::to_string(tg::kMaxRows) + "]");
       iarg += 2;
     } else if (key == "bar_length" || key == "bar_height" || key == "bar_thickness" || key == "bar_gap" ||
                key == "step_height" || key == "overlap" || key == "declination" || key == "declination_deg" ||

@@ -337,7 +337,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
       continue;
     }
     // a centre on the wall surface has no normal: stop with the atom ID instead of NaN forces
-    if (__builtin_expect(rsq == 0.0, 0)) centre_on_wall(i);
+    if (__builtin_expect(!(rsq > 0.0), 0)) centre_on_wall(i);
 
     double meff = rmass[i];
     if (fix_rigid && mass_rigid[i] > 0.0) meff = mass_rigid[i];

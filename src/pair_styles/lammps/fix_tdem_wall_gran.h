@@ -59,7 +59,7 @@ class FixTDEMWallGran : public Fix {
  protected:
   enum { XPLANE = 0, YPLANE = 1, ZPLANE = 2, ZCYLINDER = 3 };
   // error->one naming the atom whose centre lies on the wall surface (no contact normal)
-  [[noreturn]] void centre_on_wall(int i);
+  [[noreturn, gnu::cold, gnu::noinline]] void centre_on_wall(int i);
   tdem_lammps::LawCoeffs law;
   int wallstyle, wiggle, wshear, axis;
   double lo, hi, cylradius;

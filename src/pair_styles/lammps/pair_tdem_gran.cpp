@@ -284,7 +284,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         continue;
       }
       // coincident centres have no normal: stop with the two atom IDs instead of NaN forces
-      if (__builtin_expect(rsq == 0.0, 0)) coincident_centres(i, j);
+      if (__builtin_expect(!(rsq > 0.0), 0)) coincident_centres(i, j);
 
       const double r = sqrt(rsq);
       const double rinv = 1.0 / r;

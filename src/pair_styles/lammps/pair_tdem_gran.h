@@ -72,7 +72,7 @@ class PairTDEMGran : public Pair {
 
  protected:
   // error->one naming two atoms whose centres coincide (no contact normal); out of line and cold
-  [[noreturn]] void coincident_centres(int i, int j);
+  [[noreturn, gnu::cold, gnu::noinline]] void coincident_centres(int i, int j);
 
   double dt;
   int freeze_group_bit;

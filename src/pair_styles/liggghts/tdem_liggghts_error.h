@@ -21,7 +21,7 @@ namespace liggghts {
 // A contact with distance 0 between the centres (pair, j >= 0) or between a centre and a wall
 // surface (wall): its normal is undefined. Stops with the atom IDs instead of NaN forces. The
 // models call it behind an unlikely branch, so it costs one compare per contact.
-[[noreturn]] void zero_distance(LAMMPS_NS::LAMMPS* lmp, const char* model, int i, int j, bool wall);
+[[noreturn, gnu::cold, gnu::noinline]] void zero_distance(LAMMPS_NS::LAMMPS* lmp, const char* model, int i, int j, bool wall);
 
 }  // namespace liggghts
 }  // namespace tdem

@@ -554,6 +554,7 @@ def part_bad(args, checks):
         ("bad type", good + " type sideways", ["type", "sideways", "forward", "reverse"]),
         ("bad frame", good + " frame xz", ["frame", "xz", "xyz", "xy"]),
         ("frame xy in 3D", good + " frame xy", ["frame", "xy", "dimension 2"]),
+        ("rows too many", good.replace("rows 3", "rows 100000000"), ["rows", "100000000", "[1, 1000]"]),
         ("row_group count", good + " row_group -1 0", ["row_group", "2", "one entry per row"]),
         ("phase range", good + " row_group -1 0 -1 group_phase 1.5", ["phase", "1.5", "[0, 1)"]),
         ("dwell sum", good + " stroke 0.01 dwell_out 0.6 dwell_home 0.5", ["dwell_out + dwell_home", "1.1", "[0, 1)"]),
