@@ -256,6 +256,59 @@ expect("unknown law: exit 2 and the allowed list", p.returncode == 2 and "thornt
 p = subprocess.run([args.exe, os.path.join(args.tmp, "no_such_file.csv")], capture_output=True, text=True, timeout=60)
 expect("missing file: exit 2", p.returncode == 2 and "cannot open" in p.stderr, p.stderr)
 
+# ---- 5. tabulated solutions (issue 17): the Kuwabara-Kono data (7 rows, e and t_c) fitted by direct
+# integration per row (--table off) and, repeated 300 times (2100 rows, --table auto), from the
+# tables: the same parameters (the repeated data have the same minimiser) to 1e-5, chi^2 x 300 to 1e-6
+kk_rows = rows
+reps = 300
+path_big = write_csv("kk_x300.csv", steel, ["v0", "e", "e_err", "tc", "tc_err"], kk_rows * reps)
+laws = "lsd,hertz_linear,hertz_kuwabara_kono,hertz_tsuji,hertz_general,thornton,extended_hertz,walton_braun_constant"
+j_small, _ = fit(os.path.join(args.tmp, "kk.csv"), "--law %s --steps 500 --table off" % laws)
+j_big, out_big = fit(path_big, "--law %s --steps 500" % laws)
+if j_small and j_big:
+    for name in laws.split(","):
+        a, b = law(j_small, name), law(j_big, name)
+        if not a or not b:
+            continue
+        expect(f"{name}: 7 rows integrated per row, 2100 rows tabulated",
+               not a["tabulated"] and b["tabulated"], f"{a['tabulated']} {b['tabulated']}")
+        expect(f"{name}: table vs integration at the optimum < 1e-7", b["table_check"] < 1e-7, str(b["table_check"]))
+        for ca in a["coefficients"]:
+            if ca["fitted"]:
+                # 1e-5: the minimiser's own end point (extended_hertz: chi1, v00 lie in a flat valley)
+                check(f"{name} {ca['name']}: tabulated (2100 rows) = direct (7 rows)", coef(b, ca["name"]), ca["value"], 1e-5)
+        check(f"{name} chi2: tabulated (2100 rows) = {reps} x direct (7 rows)", b["chi2"], reps * a["chi2"], 1e-6)
+        expect(f"{name}: the 2100-row fit integrated under 1 % of one collision per row and evaluation",
+               b["integrations"] < 0.01 * b["evaluations"] * 7 * reps, "%d of %d x %d" % (b["integrations"], b["evaluations"], 7 * reps))
+
+# ---- 6. encodings and streaming: UTF-8 BOM + CRLF read as the plain file; data from standard input;
+# UTF-16, CR-only line ends and binary refused (exit 2) with a message that says so
+plain = os.path.join(args.tmp, "thornton.csv")
+with open(plain, "rb") as f:
+    text = f.read()
+bomcrlf = os.path.join(args.tmp, "thornton_bom_crlf.csv")
+with open(bomcrlf, "wb") as f:
+    f.write(b"\xef\xbb\xbf" + text.replace(b"\n", b"\r\n"))
+ja, _ = fit(plain, "--law thornton")
+jb, _ = fit(bomcrlf, "--law thornton")
+if ja and jb:
+    expect("UTF-8 BOM + CRLF: the same p_y as the plain file",
+           coef(law(ja, "thornton"), "p_y") == coef(law(jb, "thornton"), "p_y"))
+p = subprocess.run([args.exe, "-", "--law", "thornton", "--quiet"], input=text.decode(), capture_output=True,
+                   text=True, timeout=60)
+expect("data from standard input (-): exit 0, named 'standard input'",
+       p.returncode == 0 and "standard input" in p.stdout and "thornton" in p.stdout, p.stderr)
+for name, data, what in (
+        ("utf16.csv", b"\xff\xfe" + text.decode().encode("utf-16-le"), "UTF-16 encoded (byte-order mark FF FE)"),
+        ("cr_only.csv", text.replace(b"\n", b"\r"), "CR-only (old Mac) line ends"),
+        ("binary.csv", text[:40] + b"\0\1\2\n" + text[40:], "NUL byte")):
+    path = os.path.join(args.tmp, name)
+    with open(path, "wb") as f:
+        f.write(data)
+    p = subprocess.run([args.exe, path], capture_output=True, text=True, errors="replace", timeout=60)
+    expect(f"{name}: exit 2 and '{what}'", p.returncode == 2 and what in p.stderr, p.stderr.strip()[:200])
+    print("     " + p.stderr.strip()[:200])
+
 if failures:
     print("\nFAILURES:")
     for f in failures:

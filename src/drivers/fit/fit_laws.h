@@ -171,6 +171,12 @@ inline std::string limit_force_setting(const Context& c) {
   return std::string("limitForce ") + (c.end == ContactEnd::zero_force ? "on" : "off");
 }
 
+// Similarity form (tabulate.h): the prediction at v0 is {E(q, key), t_scale T(q, key),
+// f_scale F(q, key)} of a family of dimensionless solutions.
+struct Similar {
+  double q = NAN, key = 0.0, t_scale = 1.0, f_scale = 1.0;
+};
+
 // ------------------------------------------------------------------ the law interface
 class FitLaw {
  public:
@@ -185,10 +191,42 @@ class FitLaw {
   virtual Prediction closed(const std::vector<double>& x, double v0) const { return Prediction(); }
   virtual std::vector<Coef> coefficients(const std::vector<double>& x) const = 0;
   virtual HostLines hosts(const std::vector<double>& x) const = 0;
+  // The similarity variable of the collision at v0 with parameters x (false: none, or none at this
+  // v0); node() integrates the member (q, key) and returns e, t_c / t_scale, F_max / f_scale.
+  virtual bool similar(const std::vector<double>& x, double v0, Similar& s) const { return false; }
+  virtual Prediction node(double q, double key) const { return Prediction(); }
+  virtual bool key_continuous() const { return false; }  // interpolate across the key (grid kTableStep)
+  virtual bool kink_at_one() const { return false; }     // q = 1 is a kink of the solution
 
  protected:
   const Context& c_;
 };
+
+// Hertz spring k~ xi^(3/2) + damping c xi^Theta xi': in xi* = (m* v0^2/k~)^(2/5), t* = xi*/v0,
+// F* = m* v0^2/xi* the collision is s'' = -s^(3/2) - D s^Theta s', s(0) = 0, s'(0) = 1, with
+// D = c xi*^(Theta+1)/(m* v0) (Tsuji's alpha sqrt(m* k~) xi^(1/4): D = alpha).
+inline void hertz_similar(const Context& c, double c_gen, double theta, double v0, Similar& s) {
+  const double xs = std::pow(c.meff * v0 * v0 / c.khertz, 0.4);
+  s.q = c_gen * std::pow(xs, theta + 1.0) / (c.meff * v0);
+  s.key = theta;
+  s.t_scale = xs / v0;
+  s.f_scale = c.meff * v0 * v0 / xs;
+}
+inline Prediction hertz_node(const Context& c, double q, double theta) {
+  const double v = c.v_ref;
+  Similar s;
+  hertz_similar(c, 1.0, theta, v, s);  // s.q = the D of c_gen = 1
+  collision::HertzLaw law;
+  law.damping = hertz::Damping::general;
+  law.end_mode = c.end;
+  law.p = hertz::Params<double>{c.khertz, q / s.q, theta};
+  Prediction p = integrate_law(law, c, v);
+  if (p.ok) {
+    p.tc /= s.t_scale;
+    p.fmax /= s.f_scale;
+  }
+  return p;
+}
 
 // Starting values: scaled copies of a guess.
 inline std::vector<std::vector<double>> around(const std::vector<double>& g, const std::vector<double>& factors,
@@ -228,9 +266,14 @@ class LsdFit : public FitLaw {
     if (c_.has_tc) g.push_back(c_.tc_med);
     return {g};
   }
+  // the coefficients of the last x (the zero-force conversion is a root search; closed() asks
+  // for the same x at every data row)
   lsd::Coefficients<double> coef(const std::vector<double>& x) const {
-    if (c_.has_tc) return lsd::from_restitution_and_time(x[0], x[1], c_.meff, c_.end);
-    return lsd::from_restitution_and_stiffness(x[0], k_matching(c_), c_.meff, c_.end);
+    if (x == last_x_) return last_;
+    last_ = c_.has_tc ? lsd::from_restitution_and_time(x[0], x[1], c_.meff, c_.end)
+                      : lsd::from_restitution_and_stiffness(x[0], k_matching(c_), c_.meff, c_.end);
+    last_x_ = x;
+    return last_;
   }
   Prediction simulate(const std::vector<double>& x, double v0) const override {
     collision::LsdLaw law;
@@ -287,6 +330,9 @@ class LsdFit : public FitLaw {
       h.lammps.push_back("# (t_c from the Hertz-matching k at m* = " + num(c_.meff) + " kg; other masses: other k)");
     return h;
   }
+ private:
+  mutable std::vector<double> last_x_;
+  mutable lsd::Coefficients<double> last_{};
 };
 
 // ------------------------------------------------------------------ Hertz + damping
@@ -345,6 +391,18 @@ class HertzFit : public FitLaw {
     law.p = par(x);
     return integrate_law(law, c_, v0);
   }
+  bool similar(const std::vector<double>& x, double v0, Similar& s) const override {
+    const auto p = par(x);
+    switch (d_) {
+      case hertz::Damping::linear: hertz_similar(c_, p.damp, 0.0, v0, s); break;
+      case hertz::Damping::kuwabara_kono: hertz_similar(c_, p.damp, 0.5, v0, s); break;
+      case hertz::Damping::tsuji: hertz_similar(c_, p.damp * std::sqrt(c_.meff * p.k), 0.25, v0, s); break;
+      default: hertz_similar(c_, p.damp, p.theta, v0, s); break;
+    }
+    return true;
+  }
+  Prediction node(double q, double key) const override { return hertz_node(c_, q, key); }
+  bool key_continuous() const override { return d_ == hertz::Damping::general; }
   Prediction closed(const std::vector<double>& x, double v0) const override {
     Prediction p;
     if (d_ == hertz::Damping::tsuji) {
@@ -525,6 +583,31 @@ class ThorntonFit : public FitLaw {
     r.e = thornton::restitution({c_.estar, x[0]}, c_.reff, c_.meff, v0);
     return r;
   }
+  // In the yield overlap xi_y, force F_y and velocity v_y the collision depends on v0/v_y only
+  // (the plastic slope pi p_y R* is 3/2 F_y/xi_y); v0 = v_y is a kink (e = 1 below).
+  bool similar(const std::vector<double>& x, double v0, Similar& s) const override {
+    const thornton::Params<double> p{c_.estar, x[0]};
+    const double vy = thornton::yield_velocity(p, c_.reff, c_.meff);
+    s.q = v0 / vy;
+    s.t_scale = thornton::yield_overlap(p, c_.reff) / vy;
+    s.f_scale = thornton::yield_force(p, c_.reff);
+    return true;
+  }
+  Prediction node(double q, double) const override {
+    const thornton::Params<double> p{c_.estar, guess()};
+    Similar s;
+    similar({p.p_y}, 1.0, s);
+    const double vy = 1.0 / s.q;
+    collision::ThorntonLaw law;
+    law.p = p;
+    Prediction r = integrate_law(law, c_, q * vy);
+    if (r.ok) {
+      r.tc /= s.t_scale;
+      r.fmax /= s.f_scale;
+    }
+    return r;
+  }
+  bool kink_at_one() const override { return true; }
   std::vector<Coef> coefficients(const std::vector<double>& x) const override {
     const thornton::Params<double> p{c_.estar, x[0]};
     return {{"p_y", "Pa", x[0], true, ""},
@@ -776,6 +859,31 @@ class ExtendedHertzFit : public FitLaw {
     r.ok = true;
     r.e = extended::hertz_restitution(par(x), v0);
     return r;
+  }
+  // Hertz + Tsuji with alpha(e_fit(v0)) taken at the touch: D = alpha (hertz_similar). The table
+  // is over q = -ln e_fit(v0), proportional to alpha for e -> 1 (alpha(e) is a root search, made
+  // once per node instead of per row; t_c varies like alpha^(4/5) there, smooth in ln q, not in e).
+  bool similar(const std::vector<double>& x, double v0, Similar& s) const override {
+    const auto p = par(x);
+    double e = NAN;
+    try {
+      e = extended::hertz_restitution(p, p.range.clamp(v0));
+    } catch (const std::exception&) {
+      return false;
+    }
+    if (!(e > 0.0 && e < 1.0)) return false;
+    hertz_similar(c_, 1.0, 0.25, v0, s);
+    s.q = -std::log(e);
+    return true;
+  }
+  Prediction node(double q, double key) const override {
+    double alpha = NAN;
+    try {
+      alpha = hertz::tsuji_alpha_from_restitution(std::exp(-q), c_.end);
+    } catch (const std::exception&) {
+      return Prediction();
+    }
+    return hertz_node(c_, alpha, key);
   }
   std::vector<Coef> coefficients(const std::vector<double>& x) const override {
     const auto p = par(x);

@@ -25,6 +25,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -115,9 +116,16 @@ inline std::vector<std::string> split_csv(const std::string& s) {
   return out;
 }
 
+// Reads the data file line by line (streamed: the rows are not held as text); path "-" reads
+// standard input. A UTF-8 byte-order mark and CRLF line ends are accepted; UTF-16, CR-only line
+// ends and binary files are refused with a message that says so.
 inline Data read(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw BadData(path + ": cannot open the data file");
+  std::ifstream file;
+  if (path != "-") {
+    file.open(path, std::ios::binary);
+    if (!file) throw BadData(path + ": cannot open the data file");
+  }
+  std::istream& in = path == "-" ? std::cin : file;
   Data d;
   d.file = path;
   std::map<std::string, int> seen;  // numeric key -> line
@@ -127,7 +135,18 @@ inline Data read(const std::string& path) {
   static const std::vector<std::string> columns = {"v0", "e", "e_err", "tc", "tc_err", "fmax", "fmax_err"};
   while (std::getline(in, raw)) {
     ++line;
-    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    if (line == 1) {
+      if (raw.compare(0, 3, "\xEF\xBB\xBF") == 0) raw.erase(0, 3);  // UTF-8 byte-order mark
+      else if (raw.compare(0, 2, "\xFF\xFE") == 0 || raw.compare(0, 2, "\xFE\xFF") == 0)
+        fail(path, line, "the file is UTF-16 encoded (byte-order mark " +
+                             std::string(raw[0] == '\xFF' ? "FF FE" : "FE FF") + "); save it as UTF-8 or ASCII text");
+    }
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();  // CRLF line ends
+    if (raw.find('\r') != std::string::npos)
+      fail(path, line, "the line contains a carriage return (CR): the file has CR-only (old Mac) line ends; "
+                       "convert them to LF or CRLF");
+    if (raw.find('\0') != std::string::npos)
+      fail(path, line, "the line contains a NUL byte: not a text file (UTF-16 without a byte-order mark?)");
     const std::string s = trim(raw);
     if (s.empty()) continue;
     if (s[0] == '#') {
@@ -246,6 +265,7 @@ inline Data read(const std::string& path) {
     if (!std::isfinite(d.R2)) d.R2 = d.R1;
     if (!std::isfinite(d.rho2)) d.rho2 = d.rho;
   }
+  if (d.material.empty() && path == "-") d.material = "standard input";
   if (d.material.empty()) {
     const size_t slash = path.find_last_of('/');
     std::string base = slash == std::string::npos ? path : path.substr(slash + 1);

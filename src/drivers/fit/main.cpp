@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "fit_laws.h"
+#include "tabulate.h"
 #include "impact_data.h"
 #include "nelder_mead.h"
 
@@ -35,6 +36,7 @@ DATA.csv (docs/fit.md): comment lines '# key: value' with material, source, note
 configuration (wall|pair), R1 [m], rho [kg/m^3], E [Pa], nu, E2, nu2 (partner or wall
 material; E2 may be inf), R2, rho2 (pair only); then a header line and rows with the columns
 v0,e and optionally e_err,tc,tc_err,fmax,fmax_err (SI units; empty cells allowed).
+DATA.csv = - reads standard input. UTF-8 (with or without a byte-order mark), LF or CRLF line ends.
 
 Laws (--law, default all):
   lsd                           e, t_c constant (k from Hertz matching at the median v0 if no t_c data)
@@ -61,6 +63,9 @@ Options:
   --kappa K           tangentialStiffnessRatio / KAPPA printed in the input lines
                       (default 2(1-nu)/(2-nu); not fitted)
   --mu MU             friction coefficient printed in the input lines (default 0.5; not fitted)
+  --table auto|on|off tabulated single-collision solutions (default auto: on above 64 rows): the
+                      integrated predictions come from tables of the dimensionless solution (or
+                      of v0 at fixed parameters), checked against direct integration at 24 rows
   --quiet             print only the summary table
   --help              this text
 
@@ -84,7 +89,14 @@ struct Options {
   double kappa = NAN, mu = 0.5;
   bool quiet = false;
   bool help = false;
+  std::string table = "auto";  // auto | on | off: tabulated single-collision solutions (tabulate.h)
 };
+
+// Up to this many data rows the fit integrates one collision per row (as the tables would cost
+// about as much); above it the integrated predictions come from the tables (--table auto).
+constexpr size_t kDirectRows = 64;
+// The tables are checked against direct integration at this many data rows (spread over v0).
+constexpr size_t kTableCheckRows = 24;
 
 double parse_num(const std::string& opt, const std::string& s, double lo, double hi, const char* range) {
   char* end = nullptr;
@@ -115,7 +127,7 @@ Options parse_args(int argc, char** argv) {
       continue;
     }
     static const std::set<std::string> known = {"--law", "--json", "--steps", "--end", "--weights", "--w-e",
-                                                "--w-tc", "--w-fmax", "--curve", "--kappa", "--mu"};
+                                                "--w-tc", "--w-fmax", "--curve", "--kappa", "--mu", "--table"};
     if (!known.count(a)) throw BadInput("unknown option '" + a + "' (see --help)");
     if (given.count(a)) throw BadInput("option " + a + " is given twice");
     given.insert(a);
@@ -161,6 +173,10 @@ Options parse_args(int argc, char** argv) {
       o.kappa = parse_num(a, v, 0, 1e6, "[0, 1e6]");
     } else if (a == "--mu") {
       o.mu = parse_num(a, v, 0, 1e6, "[0, 1e6]");
+    } else if (a == "--table") {
+      if (v != "auto" && v != "on" && v != "off")
+        throw BadInput("option --table = '" + v + "' is not one of: auto, on, off");
+      o.table = v;
     }
   }
   if (o.file.empty()) throw BadInput("no data file given (usage: tdem-fit DATA.csv [options]; see --help)");
@@ -308,6 +324,9 @@ struct FitResult {
   double reduced = NAN, aic = NAN, aicc = NAN;
   bool closed_used = false;
   double closed_check = NAN;  // largest relative difference closed form vs integration at the optimum
+  bool tabulated = false;     // integrated predictions from the tables (tabulate.h)
+  double table_check = NAN;   // largest relative difference table vs integration at the optimum
+  long integrations = 0;      // single collisions integrated (direct and table nodes)
   int evals = 0;
   std::vector<Coef> coefs;
   HostLines hosts;
@@ -322,7 +341,7 @@ std::vector<double> to_x(const std::vector<Param>& P, const std::vector<double>&
   return x;
 }
 
-FitResult fit_one(const FitLaw& law, const Context& c, const Weights& W) {
+FitResult fit_one(const FitLaw& law, const Context& c, const Weights& W, const std::string& table) {
   FitResult R;
   R.law = law.name();
   R.description = law.description();
@@ -351,15 +370,57 @@ FitResult fit_one(const FitLaw& law, const Context& c, const Weights& W) {
     }
     if (!needs_ok(p, d)) closed = false;
   }
-  auto predict = [&](const std::vector<double>& x, bool use_closed) {
-    std::vector<Prediction> out(pts.size());
-    for (size_t i = 0; i < pts.size(); ++i) {
-      try {
-        out[i] = use_closed ? law.closed(x, pts[i].v0) : law.simulate(x, pts[i].v0);
-      } catch (const std::exception&) {
-        out[i].ok = false;
-      }
+  R.tabulated = table == "on" || (table == "auto" && pts.size() > kDirectRows);
+  Tabulator tab(law);
+  std::vector<double> v0s;
+  for (const auto& d : pts) v0s.push_back(d.v0);
+  long direct = 0;
+  auto one = [&](const std::vector<double>& x, size_t i, bool use_closed) {
+    Prediction p;
+    try {
+      if (!use_closed) ++direct;
+      p = use_closed ? law.closed(x, pts[i].v0) : law.simulate(x, pts[i].v0);
+    } catch (const std::exception&) {
+      p.ok = false;
     }
+    return p;
+  };
+  auto predict = [&](const std::vector<double>& x, bool use_closed) {
+    if (!use_closed && R.tabulated) return tab.predict(x, v0s);
+    std::vector<Prediction> out(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) out[i] = one(x, i, use_closed);
+    return out;
+  };
+  // rows for the checks against direct integration: all, or kTableCheckRows spread over v0
+  std::vector<size_t> check_rows(pts.size());
+  for (size_t i = 0; i < pts.size(); ++i) check_rows[i] = i;
+  if (R.tabulated && pts.size() > kTableCheckRows) {
+    std::sort(check_rows.begin(), check_rows.end(), [&](size_t a, size_t b) { return pts[a].v0 < pts[b].v0; });
+    std::vector<size_t> pick;
+    for (size_t k = 0; k < kTableCheckRows; ++k) pick.push_back(check_rows[k * (pts.size() - 1) / (kTableCheckRows - 1)]);
+    check_rows = pick;
+  }
+  // largest relative difference of two predictions over the measured quantities of the check rows
+  auto difference = [&](const std::vector<Prediction>& a, const std::vector<Prediction>& b) -> double {
+    double d = 0;
+    for (size_t k = 0; k < check_rows.size(); ++k) {
+      const size_t i = check_rows[k];
+      if (!b[k].ok) return INFINITY;
+      if (!a[k].ok) return INFINITY;
+      auto cmp = [&](double x, double y, double meas) {
+        if (std::isfinite(meas)) d = std::max(d, std::fabs(x - y) / std::fabs(y));
+      };
+      cmp(a[k].e, b[k].e, pts[i].e);
+      cmp(a[k].tc, b[k].tc, pts[i].tc);
+      cmp(a[k].fmax, b[k].fmax, pts[i].fmax);
+    }
+    return d;
+  };
+  auto at_check_rows = [&](const std::vector<double>& x, int how) {  // 0 closed, 1 direct, 2 as predict()
+    std::vector<Prediction> out;
+    std::vector<Prediction> all;
+    if (how == 2) all = predict(x, false);
+    for (size_t i : check_rows) out.push_back(how == 2 ? all[i] : one(x, i, how == 0));
     return out;
   };
   auto objective = [&](bool use_closed) {
@@ -384,18 +445,7 @@ FitResult fit_one(const FitLaw& law, const Context& c, const Weights& W) {
   R.closed_used = closed;
   // Largest relative difference closed form vs integration over the measured quantities.
   auto closed_vs_integrated = [&](const std::vector<double>& xx) -> double {
-    const auto pc = predict(xx, true), pi = predict(xx, false);
-    double d = 0;
-    for (size_t i = 0; i < pts.size(); ++i) {
-      if (!pi[i].ok) return INFINITY;
-      auto cmp = [&](double a, double b, double meas) {
-        if (std::isfinite(meas)) d = std::max(d, std::fabs(a - b) / std::fabs(b));
-      };
-      cmp(pc[i].e, pi[i].e, pts[i].e);
-      cmp(pc[i].tc, pi[i].tc, pts[i].tc);
-      cmp(pc[i].fmax, pi[i].fmax, pts[i].fmax);
-    }
-    return d;
+    return difference(at_check_rows(xx, 0), at_check_rows(xx, 1));
   };
   if (closed) {
     const double d = closed_vs_integrated(x);
@@ -424,6 +474,13 @@ FitResult fit_one(const FitLaw& law, const Context& c, const Weights& W) {
                    ", " + num(P[i].hi) + "]";
   }
   R.pred = predict(x, false);
+  if (R.tabulated) {
+    R.table_check = difference(at_check_rows(x, 2), at_check_rows(x, 1));
+    if (!(R.table_check <= 1e-6))
+      R.warning += (R.warning.empty() ? "" : "; ") + std::string("tabulated vs integrated solution ") +
+                   num(R.table_check) + " at the optimum (rerun with --table off)";
+  }
+  R.integrations = direct + tab.integrations();
   R.res = residuals(c, W, R.pred);
   for (size_t i = 0; i < pts.size(); ++i)
     if (!needs_ok(R.pred[i], pts[i])) {
@@ -543,7 +600,7 @@ std::string join(const std::vector<std::string>& v) {
 void print_report(const Context& c, const Weights& W, const std::vector<FitResult>& rs, const Best& best,
                   bool quiet) {
   const auto& d = c.data;
-  std::printf("tdem-fit: %s\n", d.file.c_str());
+  std::printf("tdem-fit: %s\n", d.file == "-" ? "standard input" : d.file.c_str());
   std::printf("material: %s\n", d.material.c_str());
   std::printf("configuration: %s; R1 = %s m, rho = %s kg/m^3, E = %s Pa, nu = %s; partner E2 = %s Pa, nu2 = %s",
               d.wall ? "sphere on a wall" : "two spheres", g(d.R1).c_str(), g(d.rho).c_str(), g(d.E).c_str(),
@@ -567,6 +624,11 @@ void print_report(const Context& c, const Weights& W, const std::vector<FitResul
                   g(best.criterion == "AICc" ? r.aicc : r.aic, 5).c_str());
       std::printf("   minimised on the %s (%d evaluations)", r.closed_used ? "closed form" : "integration", r.evals);
       if (r.closed_used) std::printf("; closed form vs integration at the optimum: %s", g(r.closed_check, 2).c_str());
+      std::printf("\n");
+      std::printf("   %ld single collisions integrated", r.integrations);
+      if (r.tabulated)
+        std::printf(" (tabulated solutions; table vs integration at %zu rows at the optimum: %s)",
+                    std::min(d.points.size(), kTableCheckRows), g(r.table_check, 2).c_str());
       std::printf("\n");
       if (!r.warning.empty()) std::printf("   warning: %s\n", r.warning.c_str());
       std::printf("   v0 [m/s]   e data   e model");
@@ -674,6 +736,8 @@ bool write_json(const std::string& path, const Context& c, const Weights& W, con
     s += "      \"aic\": " + json_num(r.aic) + ", \"aicc\": " + json_num(r.aicc) + ",\n";
     s += "      \"closed_form_used\": " + std::string(r.closed_used ? "true" : "false") +
          ", \"closed_form_check\": " + json_num(r.closed_check) + ", \"evaluations\": " + std::to_string(r.evals) +
+         ", \"tabulated\": " + (r.tabulated ? "true" : "false") + ", \"table_check\": " + json_num(r.table_check) +
+         ", \"integrations\": " + std::to_string(r.integrations) +
          ",\n";
     s += "      \"warning\": " + json_str(r.warning) + ",\n";
     std::vector<double> pe, pt, pf;
@@ -729,7 +793,7 @@ int main(int argc, char** argv) {
   for (const auto& name : o.laws) {
     const auto law = make_law(name, c);
     try {
-      rs.push_back(fit_one(*law, c, W));
+      rs.push_back(fit_one(*law, c, W, o.table));
       add_curve(rs.back(), *law, c, o.curve);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "tdem-fit: error: law %s: %s\n", name.c_str(), e.what());
