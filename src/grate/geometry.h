@@ -99,7 +99,7 @@ inline Vec3 closest_point(const Box& b, Vec3 p) {
 }
 
 // Size limit of the input (docs/limits.md): a grate of the dissertation has 5-20 rows; 1000 rows
-// already give 2 x 2.4 MB of STL bars in LIGGGHTS. Both hosts refuse more.
+// already give about 1.2 MB of STL per bar mesh in LIGGGHTS. Both hosts refuse more.
 inline constexpr int kMaxRows = 1000;
 
 struct GrateParams {

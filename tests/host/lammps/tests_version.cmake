@@ -59,3 +59,9 @@ foreach(_m grate mixing timestep clump stability)
     include(${CMAKE_CURRENT_SOURCE_DIR}/tests_${_m}.cmake)
   endif()
 endforeach()
+# the generated bad-input sweep (issue 17): every argument of every law and fix, two cases at a
+# time; the parsers are the same code in every version, so it runs in tdem-lammps mode only
+if(_mode STREQUAL tdem)
+  add_test(NAME ${_pfx}.sweep COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_sweep.py ${_args})
+  set_tests_properties(${_pfx}.sweep PROPERTIES LABELS ${_lbl} TIMEOUT 900 PROCESSORS 2)
+endif()
