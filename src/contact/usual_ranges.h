@@ -7,17 +7,14 @@
 // and are checked where the laws read their parameters, not here.
 #pragma once
 
-#include <cstdio>
 #include <string>
+
+#include "normal/input_checks.h"
 
 namespace tdem {
 namespace usual {
 
-inline std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
+using checks::number;
 
 inline std::string friction(double mu) {
   if (mu > 2.0)

@@ -18,7 +18,9 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 import lmp_common as lc  # noqa: E402
+import sweep_common as SC  # noqa: E402
 
 args = lc.parse_args(sys.argv)
 chk = lc.Checker("lammps.sweep")
@@ -129,8 +131,6 @@ CLASSES["any"] = {"-1": "accept", "0": "accept", "1e300": "huge"}
 PAIR_GOOD = "pair_style tdem/gran\npair_coeff * * normal lsd stiffness 2000 50 tangential cundall_strack 600 25 0.5"
 
 wd = lc.workdir("sweep")
-counts = {"cases": 0, "crash": 0, "hang": 0, "silent": 0, "unnamed": 0}
-
 
 CASES = []
 
@@ -139,24 +139,13 @@ def run_case(body, name, expect, words):
     CASES.append((body, name, expect, words))
 
 
-def execute(k, body, name, expect, words):
-    """expect: 'error' (ERROR naming one of `words`), 'accept' (exit 0), 'huge' (either, cleanly).
-    Returns [(ok, message)] and the counter to raise (or None); runs in a worker thread."""
+def execute(k):
+    body, name, expect, words = CASES[k]
     try:
         rc, out = lc.run(args["tdem"], BASE.format(body=body), wd, "in.sweep%03d" % k, check=False, timeout=60)
     except Exception as ex:  # subprocess.TimeoutExpired
         return [(False, "%s: no hang (%s)" % (name, type(ex).__name__))], "hang"
-    err = [l for l in out.splitlines() if l.startswith("ERROR")]
-    if rc < 0 or rc >= 128 or ("Signal" in out and "ERROR" not in out):
-        return [(False, "%s: crashed (exit %d)" % (name, rc))], "crash"
-    if expect == "accept" or (expect == "huge" and rc == 0):
-        ok = rc == 0 and "Loop time" in out
-        return [(ok, "%s: accepted as documented (exit %d%s)" % (name, rc, ", " + err[0][:150] if err else ""))], None
-    if rc == 0:
-        return [(False, "%s: silently accepted (exit 0), expected an ERROR" % name)], "silent"
-    named = expect == "huge" or (err and any(w.lower() in err[0].lower() for w in words))
-    return [(bool(err) and named, "%s: exit %d, %s" % (name, rc, err[0][:170] if err else "no ERROR line"))], \
-        (None if named else "unnamed")
+    return SC.verdict(name, rc, out, expect, words)
 
 
 def mutations(cls):
@@ -212,21 +201,5 @@ for template, key, bad, allowed in WORDS:
 for case, template, slots in FIXES:
     sweep_template(case, template, slots, lambda t: PAIR_GOOD + "\n" + t, [case.split()[0], "tdem/"])
 
-# two cases at a time (two cores); the results are printed in the order of the cases
-import concurrent.futures  # noqa: E402
-
-
-with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-    for results, counter in pool.map(lambda k: execute(k, *CASES[k]), range(len(CASES))):
-        counts["cases"] += 1
-        if counter:
-            counts[counter] += 1
-        for ok, msg in results:
-            chk.check(ok, msg)
-
-print("sweep: %(cases)d cases, %(crash)d crashes, %(hang)d hangs, %(silent)d silent acceptances, "
-      "%(unnamed)d errors not naming the argument" % counts)
-chk.check(counts["cases"] >= 150, "at least 150 cases (%d)" % counts["cases"])
-chk.check(counts["crash"] == 0 and counts["hang"] == 0 and counts["silent"] == 0,
-          "0 crashes, 0 hangs, 0 silent acceptances")
+SC.finish(SC.run_all(len(CASES), execute, chk), chk)
 chk.done()

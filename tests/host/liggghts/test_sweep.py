@@ -13,13 +13,14 @@ unbuffered (stdbuf -o0 -e0) so that no message is lost, and must end in one of t
   * a documented acceptance (docs/limits.md): 0 for a damping, friction, slope or exponent
     increment; 1e300 for a dimensional constant (or a clean host error such as lost atoms).
 Counts: crashes, hangs and silent acceptances must all be 0."""
-import concurrent.futures
 import os
 import subprocess
 import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+sys.path.insert(0, os.path.dirname(HERE))
+import sweep_common as SC  # noqa: E402
 import tdem_lig as T  # noqa: E402
 
 args = T.parse_args()
@@ -194,35 +195,8 @@ def execute(k):
         r = subprocess.run(cmd, cwd=wd, capture_output=True, text=True, errors="replace", timeout=60)
     except subprocess.TimeoutExpired:
         return [(False, "%s: no hang (timeout)" % name)], "hang"
-    out = r.stdout + r.stderr
-    rc = r.returncode
-    err = [l for l in out.splitlines() if l.startswith("ERROR")]
-    if rc < 0 or rc >= 128 or ("Signal" in out and not err):
-        return [(False, "%s: crashed (exit %d)" % (name, rc))], "crash"
-    if expect == "accept" or (expect == "huge" and rc == 0):
-        return [(rc == 0 and "Loop time" in out, "%s: accepted as documented (exit %d%s)"
-                 % (name, rc, ", " + err[0][:150] if err else ""))], None
-    if rc == 0:
-        return [(False, "%s: silently accepted (exit 0), expected an ERROR" % name)], "silent"
-    if expect == "host":
-        ok = bool(err) and (HOST_PARSER in err[0] or any(w.lower() in err[0].lower() for w in words))
-        return [(ok, "%s: exit %d, %s" % (name, rc, err[0][:170] if err else "no ERROR line"))], None
-    named = expect == "huge" or (err and any(w.lower() in err[0].lower() for w in words))
-    return [(bool(err) and named, "%s: exit %d, %s" % (name, rc, err[0][:170] if err else "no ERROR line"))], \
-        (None if named else "unnamed")
+    return SC.verdict(name, r.returncode, r.stdout + r.stderr, expect, words, (HOST_PARSER,))
 
 
-counts = {"cases": 0, "crash": 0, "hang": 0, "silent": 0, "unnamed": 0}
-with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-    for results, counter in pool.map(execute, range(len(CASES))):
-        counts["cases"] += 1
-        if counter:
-            counts[counter] += 1
-        for ok, msg in results:
-            chk.check(ok, msg)
-print("sweep: %(cases)d cases, %(crash)d crashes, %(hang)d hangs, %(silent)d silent acceptances, "
-      "%(unnamed)d errors not naming the property or keyword" % counts)
-chk.check(counts["cases"] >= 150, "at least 150 cases (%d)" % counts["cases"])
-chk.check(counts["crash"] == 0 and counts["hang"] == 0 and counts["silent"] == 0,
-          "0 crashes, 0 hangs, 0 silent acceptances")
+SC.finish(SC.run_all(len(CASES), execute, chk), chk, "the property or keyword")
 chk.done()

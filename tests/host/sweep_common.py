@@ -1,0 +1,47 @@
+# SPDX-License-Identifier: GPL-2.0-or-later
+"""The verdict of one case of the generated bad-input sweeps (tests/host/lammps/test_sweep.py,
+tests/host/liggghts/test_sweep.py) and the parallel runner shared by both."""
+import concurrent.futures
+
+
+def verdict(name, rc, out, expect, words, host_words=()):
+    """expect: 'error' (an ERROR line naming one of `words`), 'accept' (exit 0 after a run), 'huge'
+    (either, cleanly), 'host' (an ERROR naming `words` or containing one of `host_words`: the host's
+    own parser). Returns [(ok, message)] and the counter to raise ('crash', 'silent', 'unnamed' or
+    None)."""
+    err = [l for l in out.splitlines() if l.startswith("ERROR")]
+    first = err[0][:170] if err else "no ERROR line"
+    if rc < 0 or rc >= 128 or ("Signal" in out and not err):
+        return [(False, "%s: crashed (exit %d)" % (name, rc))], "crash"
+    if expect == "accept" or (expect == "huge" and rc == 0):
+        return [(rc == 0 and "Loop time" in out, "%s: accepted as documented (exit %d%s)"
+                 % (name, rc, ", " + err[0][:150] if err else ""))], None
+    if rc == 0:
+        return [(False, "%s: silently accepted (exit 0), expected an ERROR" % name)], "silent"
+    named = bool(err) and any(w.lower() in err[0].lower() for w in words)
+    if expect == "host":
+        named = named or (bool(err) and any(h in err[0] for h in host_words))
+    named = named or expect == "huge"
+    return [(bool(err) and named, "%s: exit %d, %s" % (name, rc, first))], (None if named else "unnamed")
+
+
+def run_all(n, execute, chk):
+    """Runs execute(k) for k < n two at a time (two cores) and reports in case order. Returns the
+    counts of cases, crashes, hangs, silent acceptances and unnamed errors."""
+    counts = {"cases": 0, "crash": 0, "hang": 0, "silent": 0, "unnamed": 0}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
+        for results, counter in pool.map(execute, range(n)):
+            counts["cases"] += 1
+            if counter:
+                counts[counter] += 1
+            for ok, msg in results:
+                chk.check(ok, msg)
+    return counts
+
+
+def finish(counts, chk, what="the argument"):
+    print("sweep: %d cases, %d crashes, %d hangs, %d silent acceptances, %d errors not naming %s"
+          % (counts["cases"], counts["crash"], counts["hang"], counts["silent"], counts["unnamed"], what))
+    chk.check(counts["cases"] >= 150, "at least 150 cases (%d)" % counts["cases"])
+    chk.check(counts["crash"] == 0 and counts["hang"] == 0 and counts["silent"] == 0,
+              "0 crashes, 0 hangs, 0 silent acceptances")
