@@ -3,6 +3,20 @@
 tests/host/liggghts/test_sweep.py) and the parallel runner shared by both."""
 import concurrent.futures
 
+# What each replacement value must give for an argument of a class: "error", "accept" (a
+# documented acceptance, docs/limits.md) or "huge" (accepted, or a clean host error such as lost
+# atoms). Words, NaN and +-inf are errors for every class (ALWAYS).
+CLASSES = {
+    "pos": {"-1": "error", "0": "error", "1e300": "huge"},      # > 0, dimensional
+    "nonneg": {"-1": "error", "0": "accept", "1e300": "huge"},  # >= 0, dimensional
+    "e": {"-1": "error", "0": "error", "1e300": "error"},       # restitution (0, 1]
+    "nu": {"-1": "error", "0": "accept", "1e300": "error"},     # Poisson ratio (-1, 0.5] or (-1, 0.5)
+    "int0": {"-1": "error", "0": "accept", "1e300": "error"},   # an integer >= 0 (every)
+    "frac": {"-1": "error", "0": "error", "1e300": "error"},    # a fraction (0, 1]
+    "any": {"-1": "accept", "0": "accept", "1e300": "huge"},    # a position
+}
+ALWAYS = {"abc": "error", "nan": "error", "inf": "error", "-inf": "error"}
+
 
 def verdict(name, rc, out, expect, words, host_words=()):
     """expect: 'error' (an ERROR line naming one of `words`), 'accept' (exit 0 after a run), 'huge'

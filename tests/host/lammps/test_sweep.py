@@ -42,18 +42,7 @@ timestep 1e-7
 run 10
 """
 
-# classes of a numeric argument: what each mutation must give ("error" or "accept"; "huge": accept
-# or a clean LAMMPS error)
-CLASSES = {
-    "pos":    {"-1": "error", "0": "error", "1e300": "huge"},
-    "nonneg": {"-1": "error", "0": "accept", "1e300": "huge"},
-    "e":      {"-1": "error", "0": "error", "1e300": "error"},
-    "nu":     {"-1": "error", "0": "accept", "1e300": "error"},
-    "nu_open": {"-1": "error", "0": "accept", "1e300": "error"},
-    "int0":   {"-1": "error", "0": "accept", "1e300": "error"},
-    "frac":   {"-1": "error", "0": "error", "1e300": "error"},
-}
-ALWAYS = {"abc": "error", "nan": "error", "inf": "error", "-inf": "error"}
+CLASSES, ALWAYS = SC.CLASSES, SC.ALWAYS
 
 H = "2e8 0.3"  # hertz material
 # (case name, template with {} for the swept slots, [(slot name in the message, class, good value)],
@@ -91,11 +80,11 @@ LAWS = [
     ("walton_braun tangential", "normal hertz " + H + " tangential walton_braun {} {} {}",
      [("KT", "nonneg", "100"), ("KAPPA", "nonneg", "0.5"), ("MU", "nonneg", "0.5")]),
     ("mindlin_deresiewicz", "normal hertz " + H + " tangential mindlin_deresiewicz {} {} {}",
-     [("E", "pos", "2e8"), ("NU", "nu_open", "0.3"), ("MU", "nonneg", "0.5")]),
+     [("E", "pos", "2e8"), ("NU", "nu", "0.3"), ("MU", "nonneg", "0.5")]),
     ("mindlin_no_slip", "normal hertz " + H + " tangential mindlin_no_slip {} {} {} {}",
-     [("E", "pos", "2e8"), ("NU", "nu_open", "0.3"), ("RATIO", "nonneg", "1"), ("MU", "nonneg", "0.5")]),
+     [("E", "pos", "2e8"), ("NU", "nu", "0.3"), ("RATIO", "nonneg", "1"), ("MU", "nonneg", "0.5")]),
     ("di_renzo", "normal hertz " + H + " tangential di_renzo {} {} {}",
-     [("E", "pos", "2e8"), ("NU", "nu_open", "0.3"), ("MU", "nonneg", "0.5")]),
+     [("E", "pos", "2e8"), ("NU", "nu", "0.3"), ("MU", "nonneg", "0.5")]),
 ]
 # documented exceptions to the class table (docs/limits.md): the value is allowed by this law
 ACCEPT = {
@@ -126,7 +115,6 @@ FIXES = [
     ("wall wiggle", "fix w all tdem/wall/gran normal lsd stiffness 2000 50 tangential cundall_strack 600 25 0.5 "
                     "zplane 0 NULL wiggle z {} {}", [("amplitude", "any", "0.001"), ("period", "pos", "0.01")]),
 ]
-CLASSES["any"] = {"-1": "accept", "0": "accept", "1e300": "huge"}
 
 PAIR_GOOD = "pair_style tdem/gran\npair_coeff * * normal lsd stiffness 2000 50 tangential cundall_strack 600 25 0.5"
 

@@ -30,6 +30,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
+import law_props as LP  # noqa: E402
 import tdem_lig as T  # noqa: E402
 
 args = T.parse_args(lambda p: p.add_argument("--part", required=True,
@@ -40,38 +41,15 @@ chk = T.Checks()
 R, RHO = 0.0025, 2500.0
 COLS = "id type x y z vx vy vz omegax omegay omegaz fx fy fz".split()
 
-# Per-type-pair properties (value of type pair 1-1; the other pairs differ, so that a row read for
-# the wrong types changes the result) and per-type properties, per law.
-PAIR = {
-    "kn": 1e4, "kt": 3e3, "gamman": 10.0, "gammat": 1.0, "gamman_abs": 1e-3, "gammat_abs": 1e-4,
-    "coefficientRestitution": 0.8, "contactTime": 1e-4, "tangentialStiffnessRatio": 0.3,
-    "coefficientFriction": 0.5, "tangentialDampingRatio": 0.1,
-    "dampingCoefficient": 0.3, "dampingExponent": 0.25,
-    "loadingStiffness": 1e4, "unloadingStiffness": 5e4, "unloadingStiffnessSlope": 2000.0,
-    "yieldPressure": 5e5,
-    "potentialEnergy": 1e-3, "potentialExponent": 24.0,
-    "loadingCoefficient": 2e5, "loadingExponent": 1.5, "unloadingCoefficient": 2e7,
-    "unloadingExponentIncrement": 0.5,
-    "restitutionFitC0": 0.8, "restitutionFitC1": 1.0, "restitutionFitC2": 0.0,
-    "contactTimeFitC0": 5e-4, "contactTimeFitC1": 0.2,
-}
-TYPE = {"youngsModulus": 5e6, "poissonsRatio": 0.3}
-SCALAR = {"characteristicVelocity": 1.0}
+PAIR = LP.PAIR
 
 
 def props(ntypes):
-    out = []
-    for k, v in PAIR.items():
-        vals = [v if (i, j) == (0, 0) else v * (0.9 if k != "coefficientRestitution" else 0.95)
-                for i in range(ntypes) for j in range(ntypes)]
-        out.append("fix p_%s all property/global %s peratomtypepair %d %s"
-                   % (k, k, ntypes, " ".join(repr(x) for x in vals)))
-    for k, v in TYPE.items():
-        out.append("fix p_%s all property/global %s peratomtype %s"
-                   % (k, k, " ".join(repr(v * (1.0 if t == 0 else 1.1)) for t in range(ntypes))))
-    for k, v in SCALAR.items():
-        out.append("fix p_%s all property/global %s scalar %r" % (k, k, v))
-    return "\n".join(out)
+    """Every property for ntypes types; the entries other than type pair 1-1 (type 1) differ, so
+    that a row read for the wrong types changes the result."""
+    return LP.lines(ntypes,
+                    lambda k, v, i, j: v if (i, j) == (0, 0) else v * (0.9 if k != "coefficientRestitution" else 0.95),
+                    lambda k, v, t: v * (1.0 if t == 0 else 1.1))
 
 
 # (name, models, settings): every normal law and setting with cundall_strack, and every tdem

@@ -21,34 +21,15 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 sys.path.insert(0, os.path.dirname(HERE))
 import sweep_common as SC  # noqa: E402
+import law_props as LP  # noqa: E402
 import tdem_lig as T  # noqa: E402
 
 args = T.parse_args()
 chk = T.Checks()
 HOST_PARSER = "Expected floating point parameter"
 
-CLASSES = {
-    "pos": {"-1": "error", "0": "error", "1e300": "huge"},
-    "nonneg": {"-1": "error", "0": "accept", "1e300": "huge"},
-    "e": {"-1": "error", "0": "error", "1e300": "error"},
-    "nu": {"-1": "error", "0": "accept", "1e300": "error"},
-    "fitpos": {"-1": "error", "0": "error", "1e300": "huge"},
-    "int0": {"-1": "error", "0": "accept", "1e300": "error"},
-    "frac": {"-1": "error", "0": "error", "1e300": "error"},
-}
+CLASSES = SC.CLASSES
 
-GOOD = {
-    "kn": 1e4, "kt": 3e3, "gamman": 10.0, "gammat": 1.0, "gamman_abs": 1e-3, "gammat_abs": 1e-4,
-    "coefficientRestitution": 0.8, "contactTime": 1e-4, "tangentialStiffnessRatio": 0.3,
-    "coefficientFriction": 0.5, "tangentialDampingRatio": 0.1, "dampingCoefficient": 0.3, "dampingExponent": 0.25,
-    "loadingStiffness": 1e4, "unloadingStiffness": 5e4, "unloadingStiffnessSlope": 2000.0, "yieldPressure": 5e5,
-    "potentialEnergy": 1e-3, "potentialExponent": 24.0, "loadingCoefficient": 2e5, "loadingExponent": 1.5,
-    "unloadingCoefficient": 2e7, "unloadingExponentIncrement": 0.5,
-    "restitutionFitC0": 0.8, "restitutionFitC1": 1.0, "restitutionFitC2": 0.1,
-    "contactTimeFitC0": 5e-4, "contactTimeFitC1": 0.2,
-}
-TYPE = {"youngsModulus": 5e6, "poissonsRatio": 0.3}
-SCALAR = {"characteristicVelocity": 1.0}
 # property -> class (how the tdem models check it)
 PROP_CLASS = {
     "kn": "pos", "kt": "nonneg", "gamman": "nonneg", "gammat": "nonneg", "gamman_abs": "nonneg",
@@ -58,7 +39,7 @@ PROP_CLASS = {
     "unloadingStiffness": "pos", "unloadingStiffnessSlope": "nonneg", "yieldPressure": "pos",
     "potentialEnergy": "pos", "potentialExponent": "pos", "loadingCoefficient": "pos", "loadingExponent": "pos",
     "unloadingCoefficient": "pos", "unloadingExponentIncrement": "nonneg", "restitutionFitC0": "e",
-    "contactTimeFitC0": "fitpos", "characteristicVelocity": "pos", "youngsModulus": "pos", "poissonsRatio": "nu",
+    "contactTimeFitC0": "pos", "characteristicVelocity": "pos", "youngsModulus": "pos", "poissonsRatio": "nu",
 }
 CS = "tangential tdem/cundall_strack"
 # (case, models, settings, the properties the law reads)
@@ -113,15 +94,7 @@ FIXES = [  # fix tdem/timestep options: (keyword, class, good)
 
 
 def properties(over=None):
-    over = over or {}
-    lines = []
-    for k, v in GOOD.items():
-        lines.append("fix p_%s all property/global %s peratomtypepair 1 %s" % (k, k, over.get(k, repr(v))))
-    for k, v in TYPE.items():
-        lines.append("fix p_%s all property/global %s peratomtype %s" % (k, k, over.get(k, repr(v))))
-    for k, v in SCALAR.items():
-        lines.append("fix p_%s all property/global %s scalar %s" % (k, k, over.get(k, repr(v))))
-    return "\n".join(lines)
+    return LP.lines(1, over=over)
 
 
 def scene(models, settings, over=None, extra=""):
@@ -167,7 +140,7 @@ for cname, models, settings, props in LAWS:
 for models, settings, key, bad in WORDS:
     case("%s %s %s" % (models.split()[1], key, bad), scene(models, settings), "error", [key, bad])
 for key, cls, good in FIXES:
-    muts = {"abc": "error", "nan": "error", "inf": "error", "-inf": "error"}
+    muts = dict(SC.ALWAYS)
     muts.update(CLASSES[cls])
     for val, expect in muts.items():
         case("fix tdem/timestep %s %s" % (key, val),
