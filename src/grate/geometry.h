@@ -160,6 +160,45 @@ inline Mesh box_mesh(const std::vector<Box>& boxes) {
   return m;
 }
 
+// Triangles of a mesh that coincide with another triangle of it (the same three corners within
+// 1e-9 of the shortest edge): the touching faces of two boxes, e.g. the bars of a row without a gap.
+// They lie inside the union of the boxes, and box_mesh triangulates opposite faces along the same
+// diagonal, so both triangles of a shared face are found. A wall mesh leaves them out (LIGGGHTS
+// refuses duplicate elements).
+inline std::vector<bool> shared_faces(const Mesh& m) {
+  const std::size_t n = m.triangles.size();
+  std::vector<bool> shared(n, false);
+  if (m.points.empty()) return shared;
+  // distinct faces differ by at least the shortest box edge: match corners to 1e-9 of it (a
+  // tolerance relative to the mesh size would merge everything in a mesh of huge boxes)
+  double edge = std::numeric_limits<double>::infinity();
+  for (const auto& t : m.triangles)
+    for (int k = 0; k < 3; ++k) edge = std::min(edge, norm(m.points[t[k]] - m.points[t[(k + 1) % 3]]));
+  const double tol = 1e-9 * edge;
+  std::vector<Vec3> c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& t = m.triangles[i];
+    c[i] = (1.0 / 3.0) * (m.points[t[0]] + m.points[t[1]] + m.points[t[2]]);
+  }
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c[a].x < c[b].x; });
+  auto same_corners = [&](std::size_t i, std::size_t j) {
+    for (int a : m.triangles[i]) {
+      bool found = false;
+      for (int b : m.triangles[j]) found = found || norm(m.points[a] - m.points[b]) <= tol;
+      if (!found) return false;
+    }
+    return true;
+  };
+  for (std::size_t a = 0; a < n; ++a)
+    for (std::size_t b = a + 1; b < n && c[order[b]].x - c[order[a]].x <= tol; ++b) {
+      const std::size_t i = order[a], j = order[b];
+      if (norm(c[i] - c[j]) <= tol && same_corners(i, j)) shared[i] = shared[j] = true;
+    }
+  return shared;
+}
+
 // Legacy-VTK polydata (ASCII) of the boxes: triangles with cell data box, row, group
 // (-1 fixed bar, -2 side wall) and velocity.
 inline void write_vtk(std::ostream& os, const std::vector<Box>& boxes, double t) {
@@ -208,9 +247,10 @@ class Grate {
     int ngroups = 0;
     for (int g : p_.row_group) ngroups = std::max(ngroups, g + 1);
     if (p_.group_phase.empty()) p_.group_phase.assign(ngroups, 0.0);
-    if (static_cast<int>(p_.group_phase.size()) < ngroups)
+    // exactly one phase per group: a surplus value means that row_group and group_phase disagree
+    if (static_cast<int>(p_.group_phase.size()) != ngroups)
       bad_value("grate", "group_phase (number of values)", static_cast<double>(p_.group_phase.size()),
-                "[" + std::to_string(ngroups) + ", inf) - one phase per phase group");
+                "{" + std::to_string(ngroups) + "} - one phase per phase group of row_group");
     for (double ph : p_.group_phase) validate_phase(ph);
     build_rest();
   }
@@ -296,13 +336,17 @@ class Grate {
       bad_value(c, "step_height", p_.step_height, "[0, inf)");
     if (!(p_.overlap >= 0.0 && p_.overlap < p_.bar_length))
       bad_value(c, "overlap", p_.overlap, "[0, bar_length)");
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(p_.origin[k])) bad_value(c, "origin", p_.origin[k], "(-inf, inf)");
     if (!(p_.declination_deg >= 0.0 && p_.declination_deg <= 80.0))
       bad_value(c, "declination", p_.declination_deg, "[0, 80] degrees");
     if (p_.side_walls) {
       if (p_.frame == Frame::xy)
         throw std::invalid_argument("grate: keyword 'side_walls' is not allowed with frame xy (2D); allowed: 3D frame xyz");
-      if (!(p_.wall_height > 0.0)) bad_value(c, "wall_height", p_.wall_height, "(0, inf)");
-      if (!(p_.wall_thickness > 0.0)) bad_value(c, "wall_thickness", p_.wall_thickness, "(0, inf)");
+      if (!(p_.wall_height > 0.0) || !std::isfinite(p_.wall_height))
+        bad_value(c, "wall_height", p_.wall_height, "(0, inf)");
+      if (!(p_.wall_thickness > 0.0) || !std::isfinite(p_.wall_thickness))
+        bad_value(c, "wall_thickness", p_.wall_thickness, "(0, inf)");
     }
     if (!p_.row_group.empty()) {
       if (static_cast<int>(p_.row_group.size()) != p_.rows)

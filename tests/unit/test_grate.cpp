@@ -3,6 +3,7 @@
 // and the mixing measures of physics_reference.md 7.2 on constructed beds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -306,6 +307,14 @@ TEST(GrateGeometry, PhaseGroupsAndExplicitMovingRows) {
   p.group_phase = {0.0};
   std::string e = error_of([&] { Grate bad(p); });
   EXPECT_NE(e.find("phase"), std::string::npos) << e;
+  p.group_phase = {0.0, 0.5, 0.25};  // one more than the groups of row_group
+  e = error_of([&] { Grate bad(p); });
+  EXPECT_NE(e.find("'group_phase (number of values)' = 3"), std::string::npos) << e;
+  p.row_group = {-1, -1, -1, -1, -1};  // no moving row: no phase
+  p.group_phase = {0.0};
+  e = error_of([&] { Grate bad(p); });
+  EXPECT_NE(e.find("{0}"), std::string::npos) << e;
+  p.row_group = {-1, 0, -1, 1, 1};
   p = base_params();
   p.row_group = {-1, 0};
   e = error_of([&] { Grate bad(p); });
@@ -741,4 +750,41 @@ TEST(GrateMixing, DepthChangeRate) {
   // time must increase
   const std::string e = error_of([&] { gap.add(3.0, 1, &id, &D, xx); });
   EXPECT_NE(e.find("time of snapshot"), std::string::npos) << e;
+}
+
+// Touching boxes (the bars of a row without a gap): exactly the two triangles of each shared face,
+// on both boxes, are marked, also in a mesh of huge bars; boxes apart have none.
+TEST(GrateGeometry, SharedFacesOfTouchingBoxes) {
+  GrateParams p = base_params();
+  p.rows = 1;
+  p.width = 0.12;
+  p.bar_thickness = 0.04;  // three bars side by side
+  p.bar_gap = 0.0;
+  const Grate g(p);
+  const std::vector<Box> boxes = g.boxes(0.0);
+  ASSERT_EQ(boxes.size(), 3u);
+  const Mesh m = box_mesh(boxes);
+  const std::vector<bool> shared = shared_faces(m);
+  std::vector<int> per_box(3, 0);
+  for (std::size_t i = 0; i < shared.size(); ++i)
+    if (shared[i]) ++per_box[m.triangle_box[i]];
+  EXPECT_EQ(per_box[0], 2);  // the outer bars share one face each, the middle bar two
+  EXPECT_EQ(per_box[1], 4);
+  EXPECT_EQ(per_box[2], 2);
+  for (std::size_t i = 0; i < shared.size(); ++i)
+    if (shared[i]) {  // a shared face is lateral: its normal is along the width axis y
+      const auto& t = m.triangles[i];
+      const Vec3 n = cross(m.points[t[1]] - m.points[t[0]], m.points[t[2]] - m.points[t[0]]);
+      EXPECT_NEAR(std::fabs(n.y), norm(n), 1e-12 * norm(n));
+    }
+  p.bar_gap = 0.001;
+  p.bar_thickness = 0.039;
+  const Mesh apart = box_mesh(Grate(p).boxes(0.0));
+  for (bool s : shared_faces(apart)) EXPECT_FALSE(s);
+  p.bar_gap = 0.0;
+  p.bar_thickness = 0.04;
+  p.bar_length = 1e300;
+  const Mesh huge = box_mesh(Grate(p).boxes(0.0));  // the same two shared faces, nothing merged
+  const std::vector<bool> sh = shared_faces(huge);
+  EXPECT_EQ(std::count(sh.begin(), sh.end(), true), 8);
 }

@@ -252,7 +252,7 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
       if (!(ph >= 0.0 && ph < 1.0))
         error->all(FLERR, where + ": keyword 'group_phase' = " + std::to_string(ph) +
                               " is outside the allowed range [0, 1) (fraction of the period)");
-    if (!gp.group_phase.empty() && static_cast<int>(gp.group_phase.size()) < ng)
+    if (!gp.group_phase.empty() && static_cast<int>(gp.group_phase.size()) != ng)
       error->all(FLERR, where + ": keyword 'group_phase' has " + std::to_string(gp.group_phase.size()) +
                             " values; allowed: one value per phase group (row_group uses " +
                             std::to_string(ng) + " groups)");

@@ -6,6 +6,7 @@
 
 #include <cerrno>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -39,33 +40,45 @@ bool is_number(const char* s) {
   if (!s || !*s) return false;
   char* end = nullptr;
   errno = 0;
-  std::strtod(s, &end);
-  return end && *end == '\0';
+  const double v = std::strtod(s, &end);
+  return end && *end == '\0' && std::isfinite(v);  // NaN and inf are no values of a grate
 }
 
-// ASCII STL of the triangles of a set of boxes (17 significant digits). Triangles lying in a
-// periodic boundary plane of axis `drop_axis` (coordinate lo or hi) are left out: LIGGGHTS wraps
-// mesh nodes periodically, so the two lateral end faces would be duplicate elements, and particles
-// cross that plane anyway.
-void write_stl(const std::string& path, const std::string& name, const std::vector<tg::Box>& boxes, int drop_axis,
-               double lo, double hi) {
+using Triangle = std::array<tg::Vec3, 3>;
+
+// The triangles of a set of boxes that go into a LIGGGHTS mesh. Left out: triangles in a periodic
+// boundary plane of axis `drop_axis` (coordinate lo or hi; LIGGGHTS wraps mesh nodes periodically, so
+// the two lateral end faces would be duplicate elements, and particles cross that plane anyway) and
+// the shared faces of touching boxes (tg::shared_faces: inside the bars, and duplicates too).
+std::vector<Triangle> mesh_triangles(const std::vector<tg::Box>& boxes, int drop_axis, double lo, double hi) {
   const tg::Mesh m = tg::box_mesh(boxes);
+  const std::vector<bool> shared = tg::shared_faces(m);
   const double tol = 1e-9 * std::max(1.0, hi - lo);
   auto on_plane = [&](const tg::Vec3& a, const tg::Vec3& b, const tg::Vec3& c, double x) {
     return std::fabs(a[drop_axis] - x) <= tol && std::fabs(b[drop_axis] - x) <= tol && std::fabs(c[drop_axis] - x) <= tol;
   };
+  std::vector<Triangle> out;
+  for (std::size_t i = 0; i < m.triangles.size(); ++i) {
+    const auto& tr = m.triangles[i];
+    const tg::Vec3 a = m.points[tr[0]], b = m.points[tr[1]], c = m.points[tr[2]];
+    if (shared[i] || (drop_axis >= 0 && (on_plane(a, b, c, lo) || on_plane(a, b, c, hi)))) continue;
+    out.push_back({a, b, c});
+  }
+  return out;
+}
+
+// ASCII STL of triangles (17 significant digits).
+void write_stl(const std::string& path, const std::string& name, const std::vector<Triangle>& tris) {
   std::ofstream f(path);
   if (!f) throw std::runtime_error("cannot open '" + path + "' for writing");
   f.precision(17);
   f << "solid " << name << "\n";
-  for (const auto& tr : m.triangles) {
-    const tg::Vec3 a = m.points[tr[0]], b = m.points[tr[1]], c = m.points[tr[2]];
-    if (drop_axis >= 0 && (on_plane(a, b, c, lo) || on_plane(a, b, c, hi))) continue;
-    tg::Vec3 n = tg::cross(b - a, c - a);
+  for (const Triangle& t : tris) {
+    tg::Vec3 n = tg::cross(t[1] - t[0], t[2] - t[0]);
     const double l = tg::norm(n);
     if (l > 0.0) n = (1.0 / l) * n;
     f << " facet normal " << n.x << " " << n.y << " " << n.z << "\n  outer loop\n";
-    for (const tg::Vec3& p : {a, b, c}) f << "   vertex " << p.x << " " << p.y << " " << p.z << "\n";
+    for (const tg::Vec3& p : t) f << "   vertex " << p.x << " " << p.y << " " << p.z << "\n";
     f << "  endloop\n endfacet\n";
   }
   f << "endsolid " << name << "\n";
@@ -337,11 +350,32 @@ void FixTdemGrate::post_create() {
     for (const tg::Box& b : all)
       if ((mi.group < 0 && b.group < 0) || (mi.group >= 0 && b.group == mi.group)) sel.push_back(b);
     const std::string path = "tdem_grate_" + mi.id + ".stl";
+    const std::vector<Triangle> tris =
+        mesh_triangles(sel, drop_axis, domain->boxlo[std::max(wax, 0)], domain->boxhi[std::max(wax, 0)]);
+    if (tris.empty())
+      error->all(FLERR, (where + ": mesh " + mi.id + " has no faces left: its bars are degenerate in double "
+                         "precision; allowed: sizes of one scale (keywords 'bar_length' " + fmt(grate_->params().bar_length) +
+                         ", 'bar_height' " + fmt(grate_->params().bar_height) + ", 'bar_thickness', 'width' " +
+                         fmt(grate_->params().width) + ")").c_str());
+    // LIGGGHTS drops mesh elements whose centre is outside the box, and its message about that
+    // overflows a buffer for far-away meshes: every rank checks first (the same grate everywhere).
+    // Shrink-wrapped sides (boundary s, m) are not checked.
+    for (const Triangle& t : tris) {
+      const tg::Vec3 c = (1.0 / 3.0) * (t[0] + t[1] + t[2]);
+      for (int k = 0; k < domain->dimension; ++k)
+        if (!(c[k] >= domain->boxlo[k] || domain->boundary[k][0] >= 2) ||
+            !(c[k] <= domain->boxhi[k] || domain->boundary[k][1] >= 2))
+          error->all(FLERR, (where + ": the bars of mesh " + mi.id + " reach outside the simulation box: a face "
+                             "centred at (" + fmt(c.x) + ", " + fmt(c.y) + ", " + fmt(c.z) + ") is outside " +
+                             "xyz"[k] + " [" + fmt(domain->boxlo[k]) + ", " + fmt(domain->boxhi[k]) + "]; allowed: "
+                             "bars inside the box (keywords 'origin', 'rows', 'bar_length', 'bar_height', "
+                             "'declination', 'step_height', side walls: 'wall_height', 'wall_thickness')").c_str());
+    }
     int ok = 1;
     std::string msg;
     if (comm->me == 0) {
       try {
-        write_stl(path, mi.id, sel, drop_axis, domain->boxlo[std::max(wax, 0)], domain->boxhi[std::max(wax, 0)]);
+        write_stl(path, mi.id, tris);
       } catch (const std::exception& e) {
         ok = 0;
         msg = e.what();
