@@ -379,6 +379,12 @@ fits::Fit read_fit(Args& a, const std::string& form_opt, const std::string& coef
     throw BadInput("option " + coef_opt + " needs " + std::to_string(n) + " comma-separated coefficients for form '" +
                    fits::to_string(f.form) + "', got " + std::to_string(c.size()));
   for (int i = 0; i < n; ++i) f.c[i] = c[i];
+  try {  // the kernel's range checks, with the option named
+    if (what == 'e') fits::validate_restitution(f);
+    else fits::validate_contact_time(f);
+  } catch (const std::exception& e) {
+    throw BadInput("option " + coef_opt + " (form " + fits::to_string(f.form) + "): " + e.what());
+  }
   return f;
 }
 
@@ -387,7 +393,11 @@ fits::Range read_range(Args& a) {
   if (a.has("--v-min")) r.v_min = a.positive("--v-min");
   if (a.has("--v-max")) r.v_max = a.positive("--v-max");
   if (a.has("--e-min")) r.e_min = a.number("--e-min", 0.0, 1.0, true, true, "(0, 1)");
-  fits::validate_range(r);
+  try {
+    fits::validate_range(r);
+  } catch (const std::exception& e) {
+    throw BadInput(std::string("options --v-min, --v-max, --e-min: ") + e.what());
+  }
   return r;
 }
 

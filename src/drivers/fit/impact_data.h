@@ -54,6 +54,7 @@ struct Data {
   double R1 = NAN, rho = NAN, E = NAN, nu = NAN;
   double E2 = NAN, nu2 = NAN, R2 = NAN, rho2 = NAN;  // filled with the defaults after reading
   std::vector<Point> points;
+  std::vector<std::string> warnings;  // "path:line: ..." (unknown keys that look like known ones)
 
   int count(char q) const {
     int n = 0;
@@ -67,6 +68,22 @@ inline std::string trim(const std::string& s) {
   while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
   while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
   return s.substr(a, b - a);
+}
+
+// Levenshtein distance of two short words (for "did you mean" of a misspelt key)
+inline std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
 }
 
 inline std::string lower(std::string s) {
@@ -169,7 +186,20 @@ inline Data read(const std::string& path) {
         seen["configuration"] = line;
       } else {
         static const std::vector<std::string> numeric = {"r1", "rho", "e", "nu", "e2", "nu2", "r2", "rho2"};
-        if (std::find(numeric.begin(), numeric.end(), k) == numeric.end()) continue;  // unknown key: a comment
+        if (std::find(numeric.begin(), numeric.end(), k) == numeric.end()) {  // unknown key: a comment
+          // ... unless it looks like a known one (E_2, Rho2, rh0): say so, the value is not used
+          std::string norm;
+          for (char ch : k)
+            if (std::isalnum(static_cast<unsigned char>(ch))) norm += ch;
+          static const std::vector<std::string> shown = {"R1", "rho", "E", "nu", "E2", "nu2", "R2", "rho2"};
+          for (std::size_t q = 0; q < numeric.size(); ++q)
+            if (norm == numeric[q] || (k.size() >= 3 && edit_distance(k, numeric[q]) == 1)) {
+              d.warnings.push_back(path + ":" + std::to_string(line) + ": key '" + key + "' is not known and is "
+                                   "taken as a comment; did you mean '" + shown[q] + "'?");
+              break;
+            }
+          continue;
+        }
         if (seen.count(k)) fail(path, line, "key '" + key + "' given twice (first on line " + std::to_string(seen[k]) + ")");
         seen[k] = line;
         if (k == "e2") {

@@ -108,6 +108,13 @@ double parse_num(const std::string& opt, const std::string& s, double lo, double
   return v;
 }
 
+// an integer option: a number in [lo, hi] without a fractional part
+int parse_int(const std::string& opt, const std::string& s, double lo, double hi, const char* range) {
+  const double v = parse_num(opt, s, lo, hi, range);
+  if (v != std::floor(v)) throw BadInput("option " + opt + " = " + s + " is not an integer (allowed: " + range + ")");
+  return static_cast<int>(v);
+}
+
 Options parse_args(int argc, char** argv) {
   Options o;
   std::set<std::string> given;
@@ -152,7 +159,7 @@ Options parse_args(int argc, char** argv) {
     } else if (a == "--json") {
       o.json = v;
     } else if (a == "--steps") {
-      o.steps = static_cast<int>(parse_num(a, v, 100, 1e6, "[100, 1e6]"));
+      o.steps = parse_int(a, v, 100, 1e6, "an integer in [100, 1e6]");
     } else if (a == "--end") {
       if (v == "zero_force") o.end = ContactEnd::zero_force;
       else if (v == "zero_overlap") o.end = ContactEnd::zero_overlap;
@@ -168,9 +175,11 @@ Options parse_args(int argc, char** argv) {
     } else if (a == "--w-fmax") {
       o.w_f = parse_num(a, v, 0, 1e12, "[0, 1e12]");
     } else if (a == "--curve") {
-      o.curve = static_cast<int>(parse_num(a, v, 0, 10000, "[0, 10000]"));
+      o.curve = parse_int(a, v, 0, 10000, "an integer in [0, 10000]");
     } else if (a == "--kappa") {
-      o.kappa = parse_num(a, v, 0, 1e6, "[0, 1e6]");
+      // KAPPA of the printed input lines: LAMMPS cundall_strack needs it > 0
+      o.kappa = parse_num(a, v, 0, 1e6, "(0, 1e6]");
+      if (!(o.kappa > 0.0)) throw BadInput("option --kappa = " + v + " is outside the allowed range (0, 1e6]");
     } else if (a == "--mu") {
       o.mu = parse_num(a, v, 0, 1e6, "[0, 1e6]");
     } else if (a == "--table") {
@@ -776,6 +785,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     const auto data = fitdata::read(o.file);
+    for (const std::string& w : data.warnings) std::fprintf(stderr, "tdem-fit: warning: %s\n", w.c_str());
     c = make_context(data, o);
   } catch (const BadInput& e) {
     std::fprintf(stderr, "tdem-fit: error: %s\n", e.what());
