@@ -11,9 +11,20 @@ CLASSES = {
     "nonneg": {"-1": "error", "0": "accept", "1e300": "huge"},  # >= 0, dimensional
     "e": {"-1": "error", "0": "error", "1e300": "error"},       # restitution (0, 1]
     "nu": {"-1": "error", "0": "accept", "1e300": "error"},     # Poisson ratio (-1, 0.5] or (-1, 0.5)
-    "int0": {"-1": "error", "0": "accept", "1e300": "error"},   # an integer >= 0 (every)
+    "int0": {"-1": "error", "0": "accept", "0.5": "error", "1e300": "error"},  # an integer >= 0 (every)
+    "int1": {"-1": "error", "0": "error", "0.5": "error", "1e300": "error"},   # an integer >= 1, capped
     "frac": {"-1": "error", "0": "error", "1e300": "error"},    # a fraction (0, 1]
+    "open01": {"-1": "error", "0": "error", "1e300": "error"},  # (0, 1)
+    "half": {"-1": "error", "0": "error", "1e300": "error"},    # (0, 0.5]
+    "unit0": {"-1": "error", "0": "accept", "1e300": "error"},  # [0, 1)
+    "deg80": {"-1": "error", "0": "accept", "1e300": "error"},  # an angle [0, 80] degrees
+    "bounded0": {"-1": "error", "0": "accept", "1e300": "error"},  # [0, a length of the scene)
+    "halfbox": {"-1": "error", "0": "error", "1e300": "error"},   # (0, half the periodic box]
+    "colbox": {"-1": "error", "0": "error", "1e300": "error"},    # (0, the periodic box]
+    "lohi_lo": {"-1": "accept", "0": "accept", "1e300": "error"},  # LO of LO < HI
+    "lohi_hi": {"-1": "error", "0": "error", "1e300": "accept"},   # HI of LO < HI (LO = 0)
     "any": {"-1": "accept", "0": "accept", "1e300": "huge"},    # a position
+    "anyfinite": {"-1": "accept", "0": "accept", "1e300": "huge"},  # a time or height
 }
 ALWAYS = {"abc": "error", "nan": "error", "inf": "error", "-inf": "error"}
 
