@@ -570,6 +570,26 @@ def part_bad(args, checks):
         line = next((l for l in out.splitlines() if "ERROR" in l), "")
         ok = r.returncode > 0 and all(n in line for n in needles)
         checks.check(ok, "bad input (%s): exit %d, message: %s" % (what, r.returncode, line.strip()[:200]))
+    # touching bars (two per row, no gap): the faces they share are left out of the meshes (LIGGGHTS
+    # refused the duplicate elements), and a sphere resting on the seam is held by the bars
+    r_s = 0.005
+    text = (base + "fix g all tdem/grate %s bar_thickness 0.05 bar_gap 0 declination 0\n" % good +
+            "create_atoms 1 single 0.05 0 %r units box\nset group all diameter %r density 2500\n" % (r_s - 1e-5, 2 * r_s) +
+            walls("g", ["g_fixed", "g_moving0"]) + "fix grav all gravity 9.81 vector 0 0 -1\nfix nve all nve/sphere\n"
+            "variable z equal z[1]\nrun 2000\nprint \"ZFINAL ${z}\"\n")
+    r = T.run(args.tdem, text, d, "seam", mpirun=args.mpirun, check=False)
+    out = r.stdout + r.stderr
+    zf = [float(l.split()[1]) for l in out.splitlines() if l.startswith("ZFINAL")]
+    facets = {}
+    for mesh in ("g_fixed", "g_moving0"):
+        path = os.path.join(d, "tdem_grate_%s.stl" % mesh)
+        facets[mesh] = open(path).read().count("facet normal") if os.path.exists(path) else -1
+    # 12 triangles per bar, less 2 per periodic end face (2 per row) and 2 per side of a shared face
+    # (2 per row): rows 0 and 2 fixed, row 1 moving
+    want = {"g_fixed": 2 * (2 * 12 - 4 - 4), "g_moving0": 2 * 12 - 4 - 4}
+    checks.check(r.returncode == 0 and facets == want and zf and r_s - 1e-4 < zf[0] < r_s,
+                 "touching bars: exit %d, mesh faces %s (expected %s), sphere on the seam at z = %s (r = %g)"
+                 % (r.returncode, facets, want, zf, r_s))
 
 
 def part_2d(args, checks):
