@@ -59,6 +59,15 @@ foreach(_m grate mixing timestep clump stability)
     include(${CMAKE_CURRENT_SOURCE_DIR}/tests_${_m}.cmake)
   endif()
 endforeach()
+# the DEM verification suite (validation/dem_suite, issue 18): DEM-01 ... DEM-11 with tdem's laws
+# against the closed forms, 1 and 2 ranks, the stock styles of equal physics in this version's lmp
+if(_mode STREQUAL tdem)
+  add_test(NAME ${_pfx}.dem_suite
+           COMMAND ${TDEM_PYTHON3} ${PROJECT_SOURCE_DIR}/validation/dem_suite/dem_suite.py --host lammps
+                   --exe ${_tdem} --stock ${_stock} --version ${_v} --mpirun ${TDEM_MPIRUN}
+                   --workdir ${CMAKE_CURRENT_BINARY_DIR}/dem_suite_${_pfx})
+  set_tests_properties(${_pfx}.dem_suite PROPERTIES LABELS "${_lbl};dem_suite" TIMEOUT 600 PROCESSORS 2)
+endif()
 # the generated bad-input sweep (issue 17): every argument of every law and fix, two cases at a
 # time; the parsers are the same code in every version (their error paths are covered per version
 # by bad_input), so it runs once, with the main LAMMPS
