@@ -66,7 +66,7 @@ if(_mode STREQUAL tdem)
            COMMAND ${TDEM_PYTHON3} ${PROJECT_SOURCE_DIR}/validation/dem_suite/dem_suite.py --host lammps
                    --exe ${_tdem} --stock ${_stock} --version ${_v} --mpirun ${TDEM_MPIRUN}
                    --workdir ${CMAKE_CURRENT_BINARY_DIR}/dem_suite_${_pfx})
-  set_tests_properties(${_pfx}.dem_suite PROPERTIES LABELS "${_lbl};dem_suite" TIMEOUT 600 PROCESSORS 2)
+  set_tests_properties(${_pfx}.dem_suite PROPERTIES LABELS "${_lbl};dem_suite" TIMEOUT 600)
 endif()
 # the generated bad-input sweep (issue 17): every argument of every law and fix, two cases at a
 # time; the parsers are the same code in every version (their error paths are covered per version
