@@ -71,6 +71,10 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
   fbar_all[0] = fbar_all[1] = fbar_all[2] = 0.0;
 
   int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
+  if (law.roll)
+    error->all(FLERR, where + ": keyword 'rolling' is not available for the bars of fix tdem/grate; "
+                              "allowed: the law without rolling resistance (pair tdem/gran and "
+                              "fix tdem/wall/gran have it)");
   size_history = tdem_lammps::history_size(law.mode, law.tlaw);
 
   // ---- grate and motion keywords

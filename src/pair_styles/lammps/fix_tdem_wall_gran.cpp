@@ -52,8 +52,8 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
   dt = update->dt;
 
   int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
-  // the tangential block + the normal law's slots
-  size_history = tdem_lammps::history_size(law.mode, law.tlaw);
+  // the tangential block + the normal law's slots (+ the rolling displacement)
+  size_history = tdem_lammps::law_history_size(law, law.tlaw);
 
   // wall geometry
   if (iarg >= narg)
@@ -229,7 +229,8 @@ void FixTDEMWallGran::post_force(int /*vflag*/)
     tdem_lammps::dispatch(false, law.mode, law.end, law.slip, law.tlaw, WallRunnerCorrected{this});
     return;
   }
-  tdem_lammps::dispatch(true, law.mode, law.end, law.slip, law.tlaw, WallRunner{this});
+  // rolling resistance runs on the run-time path (the compile-time ones have none, at no cost)
+  tdem_lammps::dispatch(!law.roll, law.mode, law.end, law.slip, law.tlaw, WallRunner{this});
 }
 
 template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline)) void FixTDEMWallGran::eval()
@@ -328,6 +329,12 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double rad = radius[i];
     double *shear = history_one[i];
     if (rsq > rad * rad) {
+      if constexpr (M < 0) {  // rolling resistance: its 3 slots follow the normal law's
+        if (law.roll) {
+          for (int m = 0; m < size_history; m++) shear[m] = 0.0;
+          continue;
+        }
+      }
       if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
         tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, size_history);
         continue;
@@ -361,10 +368,10 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double wr2 = rad * omg[i][1] * rinv;
     const double wr3 = rad * omg[i][2] * rinv;
 
-    double ccel, fs[3];
+    double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
     tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
                                                vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
-                                               ccel, fs, rad, 0.0, omg[i], nullptr);
+                                               ccel, fs, rad, 0.0, omg[i], nullptr, troll);
     if constexpr (C != 0) {
       // count / overlap: the whole contact force times s (the history stays the law's own)
       if (cv.body[i] >= 0 && share) {
@@ -385,6 +392,11 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     torque[i][0] -= rad * tor1;
     torque[i][1] -= rad * tor2;
     torque[i][2] -= rad * tor3;
+    if constexpr (M < 0) {  // rolling resistance against the wall (at rest)
+      torque[i][0] += troll[0];
+      torque[i][1] += troll[1];
+      torque[i][2] += troll[2];
+    }
   }
 }
 

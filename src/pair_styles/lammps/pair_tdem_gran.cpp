@@ -273,6 +273,12 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       if (__builtin_expect(rsq >= radsum * radsum, 1)) {
         // not touching: forget the history
         touch[jj] = 0;
+        if constexpr (M < 0) {  // rolling resistance: its 3 slots follow the normal law's (at most 3)
+          if (hsize > tdem_lammps::tangential_history_size(TL > 0 ? TL : 0) + tdem_lammps::MAX_NORMAL_HISTORY) {
+            for (int m = 0; m < hsize; m++) shear[m] = 0.0;
+            continue;
+          }
+        }
         if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
           tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, hsize);
           continue;
@@ -335,11 +341,11 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       }
 
       touch[jj] = 1;
-      double ccel, fs[3];
+      double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
       tdem_lammps::evaluate_contact<M, E, S, TL, D>(ONE ? law1 : lawrow[type[j]], meff, delx, dely,
                                                     delz, r, rinv, rsqinv, radsum - r, vr1, vr2,
                                                     vr3, wr1, wr2, wr3, dt, shearupdate, shear,
-                                                    ccel, fs, radi, radj, omega[i], omega[j]);
+                                                    ccel, fs, radi, radj, omega[i], omega[j], troll);
       if constexpr (C != 0) {
         // count / overlap: the whole contact force (normal and tangential) times s; the stored
         // tangential history is the law's own
@@ -374,6 +380,16 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         torque[j][0] -= radj * tor1;
         torque[j][1] -= radj * tor2;
         torque[j][2] -= radj * tor3;
+      }
+      if constexpr (M < 0) {  // rolling resistance (run-time path only): -troll on j
+        torque[i][0] += troll[0];
+        torque[i][1] += troll[1];
+        torque[i][2] += troll[2];
+        if (newton_pair || j < nlocal) {
+          torque[j][0] -= troll[0];
+          torque[j][1] -= troll[1];
+          torque[j][2] -= troll[2];
+        }
       }
 
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
@@ -475,7 +491,7 @@ void PairTDEMGran::init_style()
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j])
-        need_history = MAX(need_history, tdem_lammps::history_size(coeffs(i, j).mode, utlaw));
+        need_history = MAX(need_history, tdem_lammps::law_history_size(coeffs(i, j), utlaw));
   if (fix_history == nullptr)
     size_history = need_history;
   else if (need_history != size_history)
@@ -739,9 +755,11 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 // files hold the first LAW_COEFFS_V2_SIZE / LAW_COEFFS_V3_SIZE bytes and are still read.
 // Version 5 adds, after the version, how the writing LAMMPS stores neighbor-history partner IDs
 // (compat::HistoryTags); files of versions 2-4 were written by tdem on LAMMPS 2022 (values).
+// Version 6 appends the rolling resistance (LawCoeffs::roll, rp); versions 4 and 5 hold
+// LAW_COEFFS_V5_SIZE bytes.
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 5;
+  const int version = 6;
   fwrite(&version, sizeof(int), 1, fp);
   const int tags = (int) tdem_lammps::compat::history_tags();
   fwrite(&tags, sizeof(int), 1, fp);
@@ -759,16 +777,17 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version < 2 || version > 5)
+  if (version < 2 || version > 6)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads versions 2 to 5)");
+                          " cannot be read (this build reads versions 2 to 6)");
   int tags = (int) tdem_lammps::compat::HistoryTags::value;  // versions 2-4: LAMMPS 2022
   if (version >= 5) {
     if (me == 0) utils::sfread(FLERR, &tags, sizeof(int), 1, fp, nullptr, error);
     MPI_Bcast(&tags, 1, MPI_INT, 0, world);
   }
   restart_history_tags = tags;
-  const size_t nbytes = version >= 4   ? sizeof(LawCoeffs)
+  const size_t nbytes = version >= 6   ? sizeof(LawCoeffs)
+                        : version >= 4 ? tdem_lammps::LAW_COEFFS_V5_SIZE
                         : version == 3 ? tdem_lammps::LAW_COEFFS_V3_SIZE
                                        : tdem_lammps::LAW_COEFFS_V2_SIZE;
   for (int i = 1; i <= atom->ntypes; i++)

@@ -55,7 +55,7 @@ int available(int narg, char **arg, int iarg) {
   static const char *const keywords[] = {"normal", "tangential", "damping", "limit_force",
                                          "slip", "xplane", "yplane", "zplane", "zcylinder",
                                          "wiggle", "shear", "e_fit", "tc_fit", "v_min",
-                                         "v_max", "friction_limit", nullptr};
+                                         "v_max", "friction_limit", "rolling", nullptr};
   int n = 0;
   for (; iarg + n < narg; ++n) {
     for (int k = 0; keywords[k]; ++k)
@@ -575,6 +575,20 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       else if (v == "positive_normal") c.tlimit = 1;
       else fail(lmp, where, "friction_limit '" + v + "' is unknown; allowed: absolute, positive_normal");
       iarg += 2;
+    } else if (key == "rolling") {
+      // rolling resistance: rolling sds KR GAMMAR MUR (src/contact/rolling/sds.h)
+      if (iarg + 1 >= narg) fail(lmp, where, "keyword 'rolling' needs a model; allowed: sds KR GAMMAR MUR");
+      const std::string m = arg[iarg + 1];
+      if (m != "sds") fail(lmp, where, "rolling '" + m + "' is unknown; allowed: sds KR GAMMAR MUR");
+      need(lmp, where, "rolling sds", "KR GAMMAR MUR", available(narg, arg, iarg + 2), 3);
+      c.rp.kr = number(lmp, where, "rolling sds KR", arg[iarg + 2]);
+      c.rp.gammar = number(lmp, where, "rolling sds GAMMAR", arg[iarg + 3]);
+      c.rp.mur = number(lmp, where, "rolling sds MUR", arg[iarg + 4]);
+      positive(lmp, where, "rolling sds KR", c.rp.kr);
+      non_negative(lmp, where, "rolling sds GAMMAR", c.rp.gammar);
+      non_negative(lmp, where, "rolling sds MUR", c.rp.mur);
+      c.roll = 1;
+      iarg += 5;
     } else if (key == "slip") {
       if (iarg + 1 >= narg)
         fail(lmp, where, "keyword 'slip' needs a value; allowed: spring_dashpot, spring");
@@ -589,7 +603,8 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       fail(lmp, where,
            "unexpected argument '" + key +
                "'; allowed options: damping mass|absolute, limit_force yes|no, "
-               "slip spring_dashpot|spring, friction_limit absolute|positive_normal");
+               "slip spring_dashpot|spring, friction_limit absolute|positive_normal, "
+               "rolling sds KR GAMMAR MUR");
     }
   }
   (void) damping_given;
@@ -690,8 +705,13 @@ const char *tangential_name(int tlaw) {
   return tlaw >= 0 && tlaw < TLAW_COUNT ? names[tlaw] : "unknown";
 }
 
+std::string describe_rolling(const LawCoeffs &c) {
+  if (!c.roll) return "";
+  return " rolling sds kr=" + num(c.rp.kr) + " gammar=" + num(c.rp.gammar) + " mur=" + num(c.rp.mur);
+}
+
 std::string describe_law(const LawCoeffs &c) {
-  std::string s = describe_normal(c);
+  std::string s = describe_normal(c) + describe_rolling(c);
   if (c.tlaw == TLAW_CUNDALL_STRACK) return s;
   // replace the cundall_strack part by the tangential law in use
   const size_t at = s.find(" tangential cundall_strack");

@@ -29,6 +29,7 @@
 #include "contact/normal/thornton.h"
 #include "contact/normal/walton_braun.h"
 #include "contact/tangential/cundall_strack.h"
+#include "contact/rolling/sds.h"
 #include "contact/tangential/di_renzo.h"
 #include "contact/tangential/haff_werner.h"
 #include "contact/tangential/linear_spring.h"
@@ -187,10 +188,21 @@ struct LawCoeffs {
   double t_kt = 0, t_kappa = 0, t_gammat = 0, t_mu = 0, t_ratio = 0;
   // materials of the two partners of the Mindlin-type laws, and the derived G*
   double tE1 = 0, tnu1 = 0, tE2 = 0, tnu2 = 0, t_gstar = 0;
+  // ---- restart format version 6 appends the members below (versions 4 and 5 end here)
+  // rolling resistance `rolling sds KR GAMMAR MUR` (src/contact/rolling/sds.h); roll = 0: none
+  int roll = 0, pad3 = 0;
+  tdem::rolling_sds::Params<double> rp{0.0, 0.0, 0.0};
 };
-// Bytes of LawCoeffs in restart files of version 2 (before the members of version 3) and 3.
+// Bytes of LawCoeffs in restart files of version 2 (before the members of version 3), 3, and 4/5.
 inline constexpr size_t LAW_COEFFS_V2_SIZE = offsetof(LawCoeffs, pl);
 inline constexpr size_t LAW_COEFFS_V3_SIZE = offsetof(LawCoeffs, tlaw);
+inline constexpr size_t LAW_COEFFS_V5_SIZE = offsetof(LawCoeffs, roll);
+
+// History values of a type pair's law: the tangential block, the normal law's slots, then the
+// rolling displacement (3) when rolling resistance is on.
+inline int law_history_size(const LawCoeffs &c, int tlaw) {
+  return history_size(c.mode, tlaw) + (c.roll ? tdem::rolling_sds::history_size : 0);
+}
 
 inline tdem::ContactEnd contact_end(int end) {
   return end ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
@@ -232,13 +244,28 @@ std::string describe_law(const LawCoeffs &c);
 // omega_t = n x (v_i - v_j)/r for a pair (radj > 0), 0 for a wall.
 //
 // D is the damping member of normal hertz (HertzDamping; used with E >= 0, -1 reads c.hdamp).
+// Rolling-resistance torque on i (troll; the torque on j is -troll) of a contact with rolling
+// on: the rolling displacement follows the law's other history values. n = del / r points from j
+// to i; omega_j = nullptr is a wall (at rest); fn the normal force. troll stays 0 without rolling.
+inline void rolling_torque(const LawCoeffs &c, int tlaw, double delx, double dely, double delz, double rinv,
+                           double fn, double radi, double radj, const double *omega_i, const double *omega_j,
+                           double dt, bool update, double *shear, double *troll) {
+  if (!c.roll || !troll) return;
+  static const double rest[3] = {0.0, 0.0, 0.0};
+  const double n[3] = {delx * rinv, dely * rinv, delz * rinv};
+  const double reff = radj > 0.0 ? radi * radj / (radi + radj) : radi;
+  tdem::rolling_sds::torque(c.rp, n, reff, omega_i ? omega_i : rest, omega_j ? omega_j : rest, fn, dt, update,
+                            shear + history_size(c.mode, tlaw), troll);
+}
+
 template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK, int D = -1>
 inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, double dely,
                              double delz, double r, double rinv, double rsqinv, double overlap,
                              double vr1, double vr2, double vr3, double wr1, double wr2,
                              double wr3, double dt, bool update, double *shear, double &ccel,
                              double *fs, double radi = 0.0, double radj = 0.0,
-                             const double *omega_i = nullptr, const double *omega_j = nullptr) {
+                             const double *omega_i = nullptr, const double *omega_j = nullptr,
+                             double *troll = nullptr) {
   const int mode = M >= 0 ? M : c.mode;
   const int end = E >= 0 ? E : c.end;
   const int slip = S >= 0 ? S : c.slip;
@@ -447,6 +474,8 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
       const tdem::di_renzo::Params<double> p{c.t_gstar, c.t_mu, lim};
       tdem::di_renzo::force(p, k, shear, update, fs);
     }
+    if constexpr (M < 0) rolling_torque(c, tlaw, delx, dely, delz, rinv, ccel * r, radi, radj, omega_i, omega_j, dt,
+                                        update, shear, troll);
     return;
   }
 
@@ -457,6 +486,10 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
   else
     tdem::cundall_strack::force<tdem::cundall_strack::SlipRule::spring_cap>(tp, tk, ccel * r,
                                                                           update, shear, fs);
+  // rolling resistance only on the run-time path: a law with it has more history values than
+  // its compile-time path, so the hosts never take those paths for it (no cost there)
+  if constexpr (M < 0) rolling_torque(c, tlaw, delx, dely, delz, rinv, ccel * r, radi, radj, omega_i, omega_j, dt,
+                                      update, shear, troll);
 }
 
 // Dispatch helper: calls F.template run<M,E,S>() for the combination (all compile-time; the

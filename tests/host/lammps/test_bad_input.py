@@ -229,8 +229,10 @@ CASES = [
      ["damping 'viscous' is unknown; allowed: mass, absolute"]),
     ("damping with restitution", pair(GOODR + " damping mass"),
      ["'damping mass' applies to 'normal lsd stiffness' only"]),
-    ("unknown option", pair(GOOD + " rolling sds"),
-     ["unexpected argument 'rolling'", "allowed options"]),
+    ("unknown option", pair(GOOD + " twisting sds"),
+     ["unexpected argument 'twisting'", "allowed options", "rolling sds KR GAMMAR MUR"]),
+    ("rolling without values", pair(GOOD + " rolling sds"),
+     ["rolling sds needs 3 values (KR GAMMAR MUR), got 0"]),
     ("missing law", pair(""),
      ["expected 'normal lsd|hertz|walton_braun|thornton|power_law|extended_linear|extended_hertz ...' "
       "first, got 'end of line'"]),

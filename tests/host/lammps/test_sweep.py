@@ -85,6 +85,8 @@ LAWS = [
      [("E", "pos", "2e8"), ("NU", "nu", "0.3"), ("RATIO", "nonneg", "1"), ("MU", "nonneg", "0.5")]),
     ("di_renzo", "normal hertz " + H + " tangential di_renzo {} {} {}",
      [("E", "pos", "2e8"), ("NU", "nu", "0.3"), ("MU", "nonneg", "0.5")]),
+    ("rolling", "normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.5 rolling sds {} {} {}",
+     [("KR", "pos", "1000"), ("GAMMAR", "nonneg", "0"), ("MUR", "nonneg", "0.1")]),
 ]
 # documented exceptions to the class table (docs/limits.md): the value is allowed by this law
 ACCEPT = {
@@ -176,7 +178,7 @@ def wall_body(law):
 for case, template, slots in LAWS:
     law_words = [case.split()[0]]
     sweep_template(case, template, slots, pair_body, law_words)
-    if case in ("lsd stiffness", "hertz tsuji", "walton_braun"):
+    if case in ("lsd stiffness", "hertz tsuji", "walton_braun", "rolling"):
         sweep_template(case + " (wall)", template, slots, wall_body, law_words)
 
 for template, key, bad, allowed in WORDS:
