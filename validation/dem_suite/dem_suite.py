@@ -410,11 +410,19 @@ def dem07():
     sc = Scene((-2, 2, -2, 2, -0.5, 3), [dict(x=(0, 0, r - m * g / k), d=2 * r, rho=rho, w=(0, w0, 0))], 1200, 5e-4,
                every=50, gravity=(0, 0, -g), wall="zplane 0 NULL", periodic="ppf", skin=0.3)
     laws = []
+    kr = 1000.0
+    ln = math.log(e)
+    eta = 2 * (-ln / math.sqrt(PI * PI + ln * ln)) * math.sqrt(k / m)  # gamma / m* of lsd for e
     for mur in (0.05, 0.1, 0.2):
         base = lsd_e(e, k, m, 0.2857, 0.0)
-        # LIGGGHTS: the stock rolling model epsd2 (torque capped at mu_r R* F_n) with tdem/lsd; LAMMPS: none yet
+        # LAMMPS: tdem's rolling sds (src/contact/rolling/sds.h); LIGGGHTS: the stock rolling model
+        # epsd2 (torque capped at mu_r R* F_n) with tdem/lsd
+        lam = base[1] + " rolling sds %.17g 0 %.17g" % (kr, mur)
         lig = (base[2][0] + " rolling_friction epsd2", base[2][1], dict(base[2][2], coefficientRollingFriction=mur))
-        laws.append(("lsd + epsd2 mu_r %g" % mur, None, lig, {}, mur))
+        gs = ("hooke %.17g %.17g tangential linear_nohistory 0 0 rolling sds %.17g 0 %.17g damping mass_velocity"
+              % (k, eta, kr, mur))
+        stock = {"lammps": ("pair_style granular\npair_coeff * * " + gs, "granular " + gs), "bitwise": ()}
+        laws.append(("lsd + rolling mu_r %g" % mur, lam, lig, stock))
 
     def check(frames, law):
         mur = float(law.split()[-1])
