@@ -329,12 +329,6 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double rad = radius[i];
     double *shear = history_one[i];
     if (rsq > rad * rad) {
-      if constexpr (M < 0) {  // rolling resistance: its 3 slots follow the normal law's
-        if (law.roll) {
-          for (int m = 0; m < size_history; m++) shear[m] = 0.0;
-          continue;
-        }
-      }
       if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
         tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, size_history);
         continue;
@@ -368,7 +362,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double wr2 = rad * omg[i][1] * rinv;
     const double wr3 = rad * omg[i][2] * rinv;
 
-    double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
+    double ccel, fs[3], troll[3];
     tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
                                                vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
                                                ccel, fs, rad, 0.0, omg[i], nullptr, troll);
@@ -393,9 +387,11 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     torque[i][1] -= rad * tor2;
     torque[i][2] -= rad * tor3;
     if constexpr (M < 0) {  // rolling resistance against the wall (at rest)
-      torque[i][0] += troll[0];
-      torque[i][1] += troll[1];
-      torque[i][2] += troll[2];
+      if (law.roll) {
+        torque[i][0] += troll[0];
+        torque[i][1] += troll[1];
+        torque[i][2] += troll[2];
+      }
     }
   }
 }

@@ -273,12 +273,6 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       if (__builtin_expect(rsq >= radsum * radsum, 1)) {
         // not touching: forget the history
         touch[jj] = 0;
-        if constexpr (M < 0) {  // rolling resistance: its 3 slots follow the normal law's (at most 3)
-          if (hsize > tdem_lammps::tangential_history_size(TL > 0 ? TL : 0) + tdem_lammps::MAX_NORMAL_HISTORY) {
-            for (int m = 0; m < hsize; m++) shear[m] = 0.0;
-            continue;
-          }
-        }
         if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
           tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, hsize);
           continue;
@@ -341,8 +335,9 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       }
 
       touch[jj] = 1;
-      double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
-      tdem_lammps::evaluate_contact<M, E, S, TL, D>(ONE ? law1 : lawrow[type[j]], meff, delx, dely,
+      const LawCoeffs &lawij = ONE ? law1 : lawrow[type[j]];
+      double ccel, fs[3], troll[3];
+      tdem_lammps::evaluate_contact<M, E, S, TL, D>(lawij, meff, delx, dely,
                                                     delz, r, rinv, rsqinv, radsum - r, vr1, vr2,
                                                     vr3, wr1, wr2, wr3, dt, shearupdate, shear,
                                                     ccel, fs, radi, radj, omega[i], omega[j], troll);
@@ -382,13 +377,15 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         torque[j][2] -= radj * tor3;
       }
       if constexpr (M < 0) {  // rolling resistance (run-time path only): -troll on j
-        torque[i][0] += troll[0];
-        torque[i][1] += troll[1];
-        torque[i][2] += troll[2];
-        if (newton_pair || j < nlocal) {
-          torque[j][0] -= troll[0];
-          torque[j][1] -= troll[1];
-          torque[j][2] -= troll[2];
+        if (lawij.roll) {
+          torque[i][0] += troll[0];
+          torque[i][1] += troll[1];
+          torque[i][2] += troll[2];
+          if (newton_pair || j < nlocal) {
+            torque[j][0] -= troll[0];
+            torque[j][1] -= troll[1];
+            torque[j][2] -= troll[2];
+          }
         }
       }
 

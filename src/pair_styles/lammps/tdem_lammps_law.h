@@ -116,14 +116,23 @@ static_assert(normal_history_size(MODE_THORNTON) <= MAX_NORMAL_HISTORY &&
                   normal_history_size(MODE_WALTON_BRAUN) <= MAX_NORMAL_HISTORY,
               "MAX_NORMAL_HISTORY must cover every law");
 
-// Zero the normal-law slots of a contact's history (hsize values in all; cundall_strack layout).
-// Explicit stores: a loop of run-time length here became a memset call per non-touching
-// neighbour (~20 % of the pair time of the history laws).
+// Zero the slots after the tangential block of nt values: the normal law's (at most 3) and the
+// rolling displacement's (3; they follow the normal law's). Explicit stores: a loop of run-time
+// length here became a memset call per non-touching neighbour (~20 % of the pair time of the
+// history laws); with hsize known at compile time the unused stores vanish.
+inline void clear_after_tangential(double *shear, int nt, int hsize) {
+  static_assert(MAX_NORMAL_HISTORY + tdem::rolling_sds::history_size == 6, "adapt clear_after_tangential");
+  if (hsize > nt) shear[nt] = 0.0;
+  if (hsize > nt + 1) shear[nt + 1] = 0.0;
+  if (hsize > nt + 2) shear[nt + 2] = 0.0;
+  if (hsize > nt + 3) shear[nt + 3] = 0.0;
+  if (hsize > nt + 4) shear[nt + 4] = 0.0;
+  if (hsize > nt + 5) shear[nt + 5] = 0.0;
+}
+
+// Zero the slots after the cundall_strack spring of a contact's history (hsize values in all).
 inline void clear_law_history(double *shear, int hsize) {
-  static_assert(MAX_NORMAL_HISTORY == 3, "adapt clear_law_history");
-  if (hsize > TANGENTIAL_HISTORY) shear[TANGENTIAL_HISTORY] = 0.0;
-  if (hsize > TANGENTIAL_HISTORY + 1) shear[TANGENTIAL_HISTORY + 1] = 0.0;
-  if (hsize > TANGENTIAL_HISTORY + 2) shear[TANGENTIAL_HISTORY + 2] = 0.0;
+  clear_after_tangential(shear, TANGENTIAL_HISTORY, hsize);
 }
 
 // Zero the whole history of a contact of tangential law TL (> 0) with hsize values in all: the
@@ -131,12 +140,9 @@ inline void clear_law_history(double *shear, int hsize) {
 // run-time length becomes a memset call per non-touching neighbour).
 template <int TL>
 inline void clear_history(double *shear, int hsize) {
-  static_assert(MAX_NORMAL_HISTORY == 3, "adapt clear_history");
   constexpr int nt = tangential_history_size(TL);
   for (int m = 0; m < nt; m++) shear[m] = 0.0;
-  if (hsize > nt) shear[nt] = 0.0;
-  if (hsize > nt + 1) shear[nt + 1] = 0.0;
-  if (hsize > nt + 2) shear[nt + 2] = 0.0;
+  clear_after_tangential(shear, nt, hsize);
 }
 
 // Damping member of normal hertz (values of LawCoeffs::hdamp).
