@@ -23,6 +23,7 @@
 #include "normal_model_tdem_extended_hertz.h"
 #include "tangential_model_tdem_cundall_strack.h"
 #include "tangential_model_tdem_laws.h"
+#include "rolling_model_tdem_sds.h"
 
 namespace tdem {
 namespace liggghts {
@@ -67,6 +68,7 @@ void register_lsd_b();
 void register_stock_hooke();
 void register_stock_hertz();
 void register_lsd_rolling();
+void register_hertz_rolling();
 void register_hertz();
 void register_walton_braun();
 void register_thornton();

@@ -91,6 +91,7 @@ const Names& names() {
     r.tangential[TDEM_MINDLIN_NO_SLIP] = kTangentialMindlinNoSlipName;
     r.tangential[TDEM_DI_RENZO] = kTangentialDiRenzoName;
     r.surface[TDEM_CLUMP_SURFACE] = kSurfaceClumpName;
+    r.rolling[TDEM_SDS] = kRollingSdsName;
     return r;
   }();
   return n;
@@ -171,11 +172,12 @@ int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models
     return hash;  // LIGGGHTS reports the remaining cases (all models off, keyword order)
   }
   const int normal = static_cast<int>(hash & 63), tangential = static_cast<int>((hash >> 6) & 63);
-  const int surface = static_cast<int>((hash >> 24) & 63);
+  const int rolling = static_cast<int>((hash >> 18) & 63), surface = static_cast<int>((hash >> 24) & 63);
   if ((normal == TDEM_LSD || normal == TDEM_HERTZ || normal == TDEM_WALTON_BRAUN ||
        normal == TDEM_THORNTON || normal == TDEM_CONTINUOUS_POTENTIAL || normal == TDEM_POWER_LAW ||
        normal == TDEM_EXTENDED_LINEAR || normal == TDEM_EXTENDED_HERTZ || tangential == TDEM_CUNDALL_STRACK ||
-       (tangential >= TDEM_HAFF_WERNER && tangential <= TDEM_DI_RENZO) || surface == TDEM_CLUMP_SURFACE) &&
+       (tangential >= TDEM_HAFF_WERNER && tangential <= TDEM_DI_RENZO) || surface == TDEM_CLUMP_SURFACE ||
+       rolling == TDEM_SDS) &&
       !compiled().count(hash)) {
     std::string list;
     for (int64_t h : compiled()) list += "\n  " + describe(h);
@@ -212,11 +214,13 @@ void register_styles() {
   models.addTangentialModel(kTangentialMindlinNoSlipName, TDEM_MINDLIN_NO_SLIP);
   models.addTangentialModel(kTangentialDiRenzoName, TDEM_DI_RENZO);
   models.addSurfaceModel(kSurfaceClumpName, TDEM_CLUMP_SURFACE);
+  models.addRollingModel(kRollingSdsName, TDEM_SDS);
   detail::register_lsd_a();
   detail::register_lsd_b();
   detail::register_stock_hooke();
   detail::register_stock_hertz();
   detail::register_lsd_rolling();
+  detail::register_hertz_rolling();
   detail::register_hertz();
   detail::register_walton_braun();
   detail::register_thornton();

@@ -29,6 +29,7 @@ static const int TDEM_MINDLIN_NO_SLIP = 45;       // tangential tdem/mindlin_no_
 static const int TDEM_DI_RENZO = 46;              // tangential tdem/di_renzo
 // surface models (stock 0-5)
 static const int TDEM_CLUMP_SURFACE = 40;         // surface tdem/clump (clump multiple-contact correction)
+static const int TDEM_SDS = 40;                   // rolling_friction tdem/sds
 
 }  // namespace ContactModels
 }  // namespace LIGGGHTS
@@ -51,5 +52,6 @@ inline constexpr const char* kTangentialMindlinDeresiewiczName = "tdem/mindlin_d
 inline constexpr const char* kTangentialMindlinNoSlipName = "tdem/mindlin_no_slip";
 inline constexpr const char* kTangentialDiRenzoName = "tdem/di_renzo";
 inline constexpr const char* kSurfaceClumpName = "tdem/clump";
+inline constexpr const char* kRollingSdsName = "tdem/sds";
 }  // namespace liggghts
 }  // namespace tdem

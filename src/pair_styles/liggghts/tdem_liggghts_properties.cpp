@@ -123,6 +123,15 @@ MatrixProperty* create_unloading_coefficient(PropertyRegistry& registry, const c
 MatrixProperty* create_unloading_exponent_increment(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked(registry, "unloadingExponentIncrement", caller, Range::non_negative);
 }
+MatrixProperty* create_rolling_stiffness(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "rollingStiffness", caller, Range::positive);
+}
+MatrixProperty* create_rolling_damping(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "rollingDamping", caller, Range::non_negative);
+}
+MatrixProperty* create_rolling_friction(PropertyRegistry& registry, const char* caller, bool) {
+  return create_checked(registry, "coefficientRollingFriction", caller, Range::non_negative);
+}
 ScalarProperty* create_impact_velocity_min(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked_scalar(registry, "impactVelocityMin", caller, Range::positive);
 }

@@ -30,6 +30,9 @@ inline constexpr const char* kPropLoadingCoefficient = "tdem_loadingCoefficient"
 inline constexpr const char* kPropLoadingExponent = "tdem_loadingExponent";        // > 0
 inline constexpr const char* kPropUnloadingCoefficient = "tdem_unloadingCoefficient";  // > 0
 inline constexpr const char* kPropUnloadingExponentIncrement = "tdem_unloadingExponentIncrement";  // >= 0
+inline constexpr const char* kPropRollingStiffness = "tdem_rollingStiffness";    // > 0
+inline constexpr const char* kPropRollingDamping = "tdem_rollingDamping";        // >= 0
+inline constexpr const char* kPropRollingFriction = "tdem_coefficientRollingFriction";  // >= 0
 // fit coefficients: finite here; the ranges depend on the fit form (checked by the model)
 inline constexpr const char* kPropRestitutionFit[3] = {"tdem_restitutionFitC0", "tdem_restitutionFitC1",
                                                        "tdem_restitutionFitC2"};
@@ -54,6 +57,9 @@ MatrixProperty* create_loading_coefficient(PropertyRegistry& registry, const cha
 MatrixProperty* create_loading_exponent(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_unloading_coefficient(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_unloading_exponent_increment(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_rolling_stiffness(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_rolling_damping(PropertyRegistry& registry, const char* caller, bool);
+MatrixProperty* create_rolling_friction(PropertyRegistry& registry, const char* caller, bool);
 extern const MatrixPropertyCreator create_restitution_fit[3];
 extern const MatrixPropertyCreator create_contact_time_fit[2];
 ScalarProperty* create_impact_velocity_min(PropertyRegistry& registry, const char* caller, bool);
