@@ -14,6 +14,7 @@ PAIR = {
     "unloadingExponentIncrement": 0.5,
     "restitutionFitC0": 0.8, "restitutionFitC1": 1.0, "restitutionFitC2": 0.1,
     "contactTimeFitC0": 5e-4, "contactTimeFitC1": 0.2,
+    "rollingStiffness": 1e3, "rollingDamping": 1.0, "coefficientRollingFriction": 0.1,
 }
 TYPE = {"youngsModulus": 5e6, "poissonsRatio": 0.3}
 SCALAR = {"characteristicVelocity": 1.0}

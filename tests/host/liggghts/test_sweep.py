@@ -39,7 +39,8 @@ PROP_CLASS = {
     "unloadingStiffness": "pos", "unloadingStiffnessSlope": "nonneg", "yieldPressure": "pos",
     "potentialEnergy": "pos", "potentialExponent": "pos", "loadingCoefficient": "pos", "loadingExponent": "pos",
     "unloadingCoefficient": "pos", "unloadingExponentIncrement": "nonneg", "restitutionFitC0": "e",
-    "contactTimeFitC0": "pos", "characteristicVelocity": "pos", "youngsModulus": "pos", "poissonsRatio": "nu",
+    "contactTimeFitC0": "pos", "characteristicVelocity": "pos",
+    "rollingStiffness": "pos", "rollingDamping": "nonneg", "coefficientRollingFriction": "nonneg", "youngsModulus": "pos", "poissonsRatio": "nu",
 }
 CS = "tangential tdem/cundall_strack"
 # (case, models, settings, the properties the law reads)
@@ -68,6 +69,8 @@ LAWS = [
      ["tangentialDampingRatio", "coefficientFriction"]),
     ("mindlin_deresiewicz", "model tdem/hertz tangential tdem/mindlin_deresiewicz", "damping tsuji",
      ["coefficientFriction", "poissonsRatio"]),
+    ("rolling tdem/sds", "model tdem/lsd " + CS + " rolling_friction tdem/sds", "parameters restitution",
+     ["rollingStiffness", "rollingDamping", "coefficientRollingFriction"]),
 ]
 # documented exceptions: (case, property, value) -> expectation
 EXCEPT = {
