@@ -252,6 +252,7 @@ struct PlacementInput {
   // distance vector a - b (minimum image in periodic directions)
   std::function<Vec3(const Vec3&, const Vec3&)> delta;
   std::vector<Sphere> existing;     // spheres already in the box (every rank: all of them)
+  Vec3 period{0.0, 0.0, 0.0};       // box length of each periodic direction, 0 if not periodic
 };
 
 struct PlacementResult {
@@ -300,20 +301,26 @@ inline PlacementResult place_clumps(const Template& t, const PlacementInput& in)
       ok = in.inside(ps[k], t.body[k].r);
     }
     for (int k = 0; ok && k < ns; ++k) {
-      // the 27 cells around the sphere; `delta` applies the minimum image, but the grid does not wrap,
-      // so an overlap ACROSS a periodic boundary is only seen if the region reaches that boundary
-      // from both sides (documented limitation: keep the region off periodic boundaries by a diameter)
-      for (int dx = -1; ok && dx <= 1; ++dx)
-        for (int dy = -1; ok && dy <= 1; ++dy)
-          for (int dz = -1; ok && dz <= 1; ++dz) {
-            const Vec3 pp{ps[k][0] + dx * cell, ps[k][1] + dy * cell, ps[k][2] + dz * cell};
-            auto it = grid.find(key(pp));
-            if (it == grid.end()) continue;
-            for (int j : it->second)
-              if (norm(in.delta(ps[k], all[j].x)) < t.body[k].r + all[j].r) {
-                ok = false;
-                break;
-              }
+      // the 27 cells around the sphere and, in periodic directions, around its images one period
+      // away (the grid does not wrap; `delta` applies the minimum image)
+      for (int ix = -1; ok && ix <= 1; ++ix)
+        for (int iy = -1; ok && iy <= 1; ++iy)
+          for (int iz = -1; ok && iz <= 1; ++iz) {
+            if ((ix && !(in.period[0] > 0.0)) || (iy && !(in.period[1] > 0.0)) || (iz && !(in.period[2] > 0.0)))
+              continue;
+            const Vec3 img{ps[k][0] + ix * in.period[0], ps[k][1] + iy * in.period[1], ps[k][2] + iz * in.period[2]};
+            for (int dx = -1; ok && dx <= 1; ++dx)
+              for (int dy = -1; ok && dy <= 1; ++dy)
+                for (int dz = -1; ok && dz <= 1; ++dz) {
+                  const Vec3 pp{img[0] + dx * cell, img[1] + dy * cell, img[2] + dz * cell};
+                  auto it = grid.find(key(pp));
+                  if (it == grid.end()) continue;
+                  for (int j : it->second)
+                    if (norm(in.delta(ps[k], all[j].x)) < t.body[k].r + all[j].r) {
+                      ok = false;
+                      break;
+                    }
+                }
           }
     }
     if (!ok) continue;

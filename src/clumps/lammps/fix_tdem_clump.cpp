@@ -37,78 +37,6 @@ namespace {
 constexpr double kRestartMagic = 20261129.0;
 constexpr int kBodyDoubles = 14;  // mol, x3, v3, q4, L3
 
-// Cyclic Jacobi for a symmetric n x n matrix (n <= 6): eigenvalues d, eigenvectors as columns of v.
-template <int N> void jacobi_n(double a[N][N], double d[N], double v[N][N])
-{
-  for (int i = 0; i < N; i++)
-    for (int j = 0; j < N; j++) v[i][j] = (i == j) ? 1.0 : 0.0;
-  for (int sweep = 0; sweep < 100; sweep++) {
-    double off = 0.0, diag = 0.0;
-    for (int i = 0; i < N; i++) {
-      diag += a[i][i] * a[i][i];
-      for (int j = i + 1; j < N; j++) off += a[i][j] * a[i][j];
-    }
-    if (off <= 1e-30 * diag || off == 0.0) break;
-    for (int p = 0; p < N; p++)
-      for (int q = p + 1; q < N; q++) {
-        if (a[p][q] == 0.0) continue;
-        const double theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-        const double t = (theta >= 0 ? 1.0 : -1.0) / (std::fabs(theta) + std::sqrt(theta * theta + 1.0));
-        const double c = 1.0 / std::sqrt(t * t + 1.0), s = t * c;
-        for (int k = 0; k < N; k++) {  // A <- A J (columns p, q)
-          const double akp = a[k][p], akq = a[k][q];
-          a[k][p] = c * akp - s * akq;
-          a[k][q] = s * akp + c * akq;
-        }
-        for (int k = 0; k < N; k++) {  // A <- J^T A (rows p, q)
-          const double apk = a[p][k], aqk = a[q][k];
-          a[p][k] = c * apk - s * aqk;
-          a[q][k] = s * apk + c * aqk;
-        }
-        for (int k = 0; k < N; k++) {
-          const double vkp = v[k][p], vkq = v[k][q];
-          v[k][p] = c * vkp - s * vkq;
-          v[k][q] = s * vkp + c * vkq;
-        }
-      }
-  }
-  for (int i = 0; i < N; i++) d[i] = a[i][i];
-}
-
-// Solve the 6x6 system A u = b (Gaussian elimination with partial pivoting). Returns false if singular.
-bool solve6(double A[6][6], double b[6], double u[6])
-{
-  for (int c = 0; c < 6; c++) {
-    int p = c;
-    for (int r = c + 1; r < 6; r++)
-      if (std::fabs(A[r][c]) > std::fabs(A[p][c])) p = r;
-    if (A[p][c] == 0.0) return false;
-    if (p != c) {
-      for (int k = 0; k < 6; k++) std::swap(A[p][k], A[c][k]);
-      std::swap(b[p], b[c]);
-    }
-    for (int r = c + 1; r < 6; r++) {
-      const double f = A[r][c] / A[c][c];
-      for (int k = c; k < 6; k++) A[r][k] -= f * A[c][k];
-      b[r] -= f * b[c];
-    }
-  }
-  for (int c = 5; c >= 0; c--) {
-    double s = b[c];
-    for (int k = c + 1; k < 6; k++) s -= A[c][k] * u[k];
-    u[c] = s / A[c][c];
-  }
-  return true;
-}
-
-// Uniformly distributed random unit quaternion (Shoemake) from three uniforms in [0, 1).
-cl::Quat random_quat(cl::SplitMix64 &rng)
-{
-  const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform();
-  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1), tp = 2.0 * M_PI;
-  return cl::qnormalise({b * std::cos(tp * u3), a * std::sin(tp * u2), a * std::cos(tp * u2), b * std::sin(tp * u3)});
-}
-
 // Modify calls post_constructor() before restart(): whether the restart file read holds a global
 // record of this fix is looked up in Modify's list (protected members reached through pointers
 // to members of a derived class, the legal way).
@@ -413,12 +341,14 @@ void FixTDEMClump::insert_clumps()
   maxmol = all;
   for (const tagint m : molid) maxmol = std::max(maxmol, m);
 
-  auto overlap_dist = [&](const double *a, const double *b) {
-    double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
-    tdem_lammps::compat::minimum_image(domain, dx, dy, dz);
-    return std::sqrt(dx * dx + dy * dy + dz * dz);
-  };
-  auto inside = [&](const Vec3 &p, double r) {
+  // the placement of the core (src/clumps/host_bodies.h), as in LIGGGHTS: the same seed gives the
+  // same clumps in both engines
+  cl::PlacementInput in;
+  in.n = ninsert;
+  in.seed = (std::uint64_t) insert_seed;
+  in.lo = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
+  in.hi = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
+  in.inside = [&](const Vec3 &p, double r) {
     if (!region->match(p[0], p[1], p[2])) return false;
     for (int k = 0; k < 3; k++)
       for (int sgn = -1; sgn <= 1; sgn += 2) {
@@ -428,51 +358,26 @@ void FixTDEMClump::insert_clumps()
       }
     return true;
   };
-  cl::SplitMix64 rng((std::uint64_t) insert_seed * 0x9E3779B97F4A7C15ull + 12345u);
-  const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
-  const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
-  const long long max_attempts = 10000;  // consecutive failures for one clump
-  long long attempts = 0, failed = 0;
-  std::vector<cl::State> newbodies;
-  std::vector<Vec3> placed;  // sphere centres of the new clumps (unwrapped)
-  std::vector<double> placed_r;
-  std::vector<Vec3> placed_com;
-  const double Rb = tmpl.bounding_radius;
-  while ((int) newbodies.size() < ninsert) {
-    ++attempts;
-    if (++failed > max_attempts)
-      error->all(FLERR, fmt::format("{}: insert: placed only {} of {} clumps in region {}: {} random attempts "
-                                    "in a row found no free place (region too small or too full); use a larger "
-                                    "region or a smaller N",
-                                    where, newbodies.size(), ninsert, insert_region, max_attempts));
-    Vec3 c;
-    for (int k = 0; k < 3; k++) c[k] = lo[k] + rng.uniform() * (hi[k] - lo[k]);
-    const cl::Quat qr = random_quat(rng);
-    cl::State s = cl::place(tmpl, c, qr);  // com at c, template frame at orientation qr
-    const std::vector<Vec3> ps = cl::sphere_positions(s, tmpl);
-    bool ok = true;
-    for (int k = 0; ok && k < nsph; k++) ok = inside(ps[k], tmpl.body[k].r);
-    for (std::size_t b = 0; ok && b < placed_com.size(); b++) {
-      if (overlap_dist(placed_com[b].data(), s.x.data()) >= 2.0 * Rb) continue;
-      for (int k = 0; ok && k < nsph; k++)
-        for (int j = 0; ok && j < nsph; j++)
-          if (overlap_dist(ps[k].data(), placed[b * nsph + j].data()) < tmpl.body[k].r + placed_r[b * nsph + j])
-            ok = false;
-    }
-    for (int i = 0; ok && i < nold; i++)
-      for (int k = 0; ok && k < nsph; k++)
-        if (overlap_dist(ps[k].data(), &old[4 * i]) < tmpl.body[k].r + old[4 * i + 3]) ok = false;
-    if (!ok) continue;
-    failed = 0;
+  in.delta = [&](const Vec3 &a, const Vec3 &b) {
+    double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    tdem_lammps::compat::minimum_image(domain, dx, dy, dz);
+    return Vec3{dx, dy, dz};
+  };
+  for (int i = 0; i < nold; i++) in.existing.push_back({Vec3{old[4 * i], old[4 * i + 1], old[4 * i + 2]}, old[4 * i + 3]});
+  in.period = {domain->xperiodic ? domain->xprd : 0.0, domain->yperiodic ? domain->yprd : 0.0,
+               domain->zperiodic ? domain->zprd : 0.0};
+  const cl::PlacementResult res = cl::place_clumps(tmpl, in);
+  if (!res.complete)
+    error->all(FLERR, fmt::format("{}: insert: placed only {} of {} clumps in region {}: {} random attempts "
+                                  "in a row found no free place (region too small or too full); use a larger "
+                                  "region or a smaller N",
+                                  where, res.bodies.size(), ninsert, insert_region, in.max_failures));
+  std::vector<cl::State> newbodies = res.bodies;
+  for (auto &s : newbodies) {
     s.v = {insert_vel[0], insert_vel[1], insert_vel[2]};
     s.L = {0, 0, 0};
-    newbodies.push_back(s);
-    placed_com.push_back(s.x);
-    for (int k = 0; k < nsph; k++) {
-      placed.push_back(ps[k]);
-      placed_r.push_back(tmpl.body[k].r);
-    }
   }
+  const std::vector<Vec3> &placed = res.spheres;  // sphere centres of the new clumps (unwrapped)
 
   // create the spheres this rank owns
   const int nprev = atom->nlocal;
@@ -528,7 +433,7 @@ void FixTDEMClump::insert_clumps()
   if (comm->me == 0)
     utils::logmesg(lmp, fmt::format("{}: inserted {} clumps ({} spheres) in region {} after {} attempts; "
                                     "molecule IDs {}-{}, atom IDs {}-{}\n",
-                                    where, ninsert, created, insert_region, attempts, maxmol + 1, maxmol + ninsert,
+                                    where, ninsert, created, insert_region, res.attempts, maxmol + 1, maxmol + ninsert,
                                     maxtag + 1, maxtag + created));
 }
 
@@ -610,69 +515,24 @@ void FixTDEMClump::form_bodies()
                                       "radius {}",
                                       where, tags[k], kv.first, v[k][11], k + 1, tmpl.name, r));
     }
-    // orientation: best rotation of the body offsets onto the sphere centres (Horn's quaternion)
-    Vec3 abar{0, 0, 0}, ybar{0, 0, 0};
+    // orientation (Horn's quaternion) and velocities (least squares) of the core, as in LIGGGHTS
+    std::vector<Vec3> p(nsph), vel(nsph), om(nsph);
     for (int k = 0; k < nsph; k++) {
-      abar = cl::add(abar, tmpl.body[k].x);
-      ybar = cl::add(ybar, Vec3{v[k][2], v[k][3], v[k][4]});
+      p[k] = {v[k][2], v[k][3], v[k][4]};
+      vel[k] = {v[k][5], v[k][6], v[k][7]};
+      om[k] = {v[k][8], v[k][9], v[k][10]};
     }
-    abar = cl::scale(1.0 / nsph, abar);
-    ybar = cl::scale(1.0 / nsph, ybar);
-    double S[3][3] = {};
-    for (int k = 0; k < nsph; k++) {
-      const Vec3 a = cl::sub(tmpl.body[k].x, abar);
-      const Vec3 y = cl::sub(Vec3{v[k][2], v[k][3], v[k][4]}, ybar);
-      for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++) S[i][j] += a[i] * y[j];
+    cl::BodyFit fit;
+    try {
+      fit = cl::fit_body(tmpl, bprop, p, vel, om);
+    } catch (const std::exception &ex) {
+      error->all(FLERR, where + ": internal error: " + ex.what());
     }
-    double N[4][4] = {{S[0][0] + S[1][1] + S[2][2], S[1][2] - S[2][1], S[2][0] - S[0][2], S[0][1] - S[1][0]},
-                      {S[1][2] - S[2][1], S[0][0] - S[1][1] - S[2][2], S[0][1] + S[1][0], S[2][0] + S[0][2]},
-                      {S[2][0] - S[0][2], S[0][1] + S[1][0], -S[0][0] + S[1][1] - S[2][2], S[1][2] + S[2][1]},
-                      {S[0][1] - S[1][0], S[2][0] + S[0][2], S[1][2] + S[2][1], -S[0][0] - S[1][1] + S[2][2]}};
-    double ev[4], vec[4][4];
-    jacobi_n<4>(N, ev, vec);
-    int best = 0;
-    for (int k = 1; k < 4; k++)
-      if (ev[k] > ev[best] + 1e-14 * (std::fabs(ev[best]) + 1e-300)) best = k;
-    cl::State s;
-    s.q = cl::qnormalise({vec[0][best], vec[1][best], vec[2][best], vec[3][best]});
-    const Mat3 R = cl::rotation_matrix(s.q);
-    s.x = cl::sub(ybar, cl::mul(R, abar));
-    double resid = 0.0;
-    for (int k = 0; k < nsph; k++) {
-      const Vec3 p = cl::add(s.x, cl::mul(R, tmpl.body[k].x));
-      resid = std::max(resid, cl::norm(cl::sub(p, Vec3{v[k][2], v[k][3], v[k][4]})));
-    }
-    if (resid > 1e-6 * tmpl.bounding_radius)
+    if (fit.residual > 1e-6 * tmpl.bounding_radius)
       error->all(FLERR, fmt::format("{}: the spheres of molecule {} (atom IDs {}..., in ID order) are not a rigid "
                                     "copy of template {}: largest distance {} from the best fit (allowed {})",
-                                    where, kv.first, tags[0], tmpl.name, resid, 1e-6 * tmpl.bounding_radius));
-    // velocities: least squares v + w x r_k = v_k, weakly pulled to the mean sphere omega
-    double A[6][6] = {}, rhs[6] = {}, u[6] = {0, 0, 0, 0, 0, 0};
-    Vec3 wbar{0, 0, 0};
-    double r2 = 0.0;
-    for (int k = 0; k < nsph; k++) {
-      const Vec3 r = cl::mul(R, tmpl.body[k].x);
-      r2 += cl::dot(r, r);
-      wbar = cl::add(wbar, Vec3{v[k][8], v[k][9], v[k][10]});
-      // J = [I, -[r]x]: row i: e_i (v part), (w part) -[r]x row i
-      double J[3][6] = {{1, 0, 0, 0, r[2], -r[1]}, {0, 1, 0, -r[2], 0, r[0]}, {0, 0, 1, r[1], -r[0], 0}};
-      const double vk[3] = {v[k][5], v[k][6], v[k][7]};
-      for (int a = 0; a < 6; a++) {
-        for (int b = 0; b < 6; b++)
-          for (int i = 0; i < 3; i++) A[a][b] += J[i][a] * J[i][b];
-        for (int i = 0; i < 3; i++) rhs[a] += J[i][a] * vk[i];
-      }
-    }
-    wbar = cl::scale(1.0 / nsph, wbar);
-    const double eps = r2 > 0.0 ? 1e-12 * r2 : 1.0;
-    for (int a = 3; a < 6; a++) {
-      A[a][a] += eps;
-      rhs[a] += eps * wbar[a - 3];
-    }
-    if (!solve6(A, rhs, u)) error->all(FLERR, where + ": internal error: singular velocity fit");
-    s.v = {u[0], u[1], u[2]};
-    cl::set_angular_velocity(s, bprop, Vec3{u[3], u[4], u[5]});
+                                    where, kv.first, tags[0], tmpl.name, fit.residual, 1e-6 * tmpl.bounding_radius));
+    const cl::State &s = fit.state;
     add_body(kv.first, s, tags.data());
     nnew++;
   }

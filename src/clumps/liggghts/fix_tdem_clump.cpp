@@ -383,6 +383,8 @@ void FixTdemClump::insert_clumps() {
     return Vec3{dx, dy, dz};
   };
   for (int i = 0; i < ntot / 4; i++) in.existing.push_back({Vec3{old[4 * i], old[4 * i + 1], old[4 * i + 2]}, old[4 * i + 3]});
+  in.period = {domain->xperiodic ? domain->xprd : 0.0, domain->yperiodic ? domain->yprd : 0.0,
+               domain->zperiodic ? domain->zprd : 0.0};
   const cl::PlacementResult res = cl::place_clumps(tmpl_, in);
   if (!res.complete)
     fail(where_ + ": keyword 'insert': placed only " + std::to_string(res.bodies.size()) + " of " +

@@ -336,6 +336,7 @@ POUR_RESTART = """
 units si
 atom_style sphere
 atom_modify map array
+newton off
 read_restart pour.restart
 fix pm all property/atom mol ghost yes
 comm_modify vel yes
@@ -388,11 +389,14 @@ def part_mpi():
 
 def part_restart():
     wd = lc.workdir("clump_restart")
-    # (600 steps: later, the different order of the atoms after read_restart changes the order
-    # of the per-atom sums of the pair style at round-off level, and the dense pile amplifies it)
-    full = POUR + "run 6000\nrun 600\n" + DUMP.format(out="d.full")
-    lc.run(TDEM, full, wd, "in.full", np_=2, mpirun=MPIRUN)
-    first = POUR + "run 6000\nwrite_restart pour.restart\n"
+    # The reference is the process that wrote the restart file and went on: `run 6000; write_restart;
+    # run 600`. Not `run 6000; run 600`: LAMMPS itself (stock gran/hooke/history + fix wall/gran with
+    # nve/sphere, 2022 and 4Jul2026 alike) does not continue a granular pile identically across a
+    # `run` boundary (measured on this pile: 2.5e-2 after one step; 1e-6 with reneighbouring every
+    # step), so that comparison depends on the pile. (600 steps: later, the different order of the
+    # atoms after read_restart changes the order of the per-atom sums at round-off level, and the
+    # dense pile amplifies it.)
+    first = POUR + "run 6000\nwrite_restart pour.restart\nrun 600\n" + DUMP.format(out="d.full")
     lc.run(TDEM, first, wd, "in.first", np_=2, mpirun=MPIRUN)
     _, out = lc.run(TDEM, POUR_RESTART.format(m=600, out="d.rest"), wd, "in.rest", np_=2, mpirun=MPIRUN)
     chk.check("'insert' is skipped" in out, "the restarted fix does not insert again")
@@ -401,8 +405,8 @@ def part_restart():
     chk.check(a.shape == b.shape, "same spheres after the restart (%s vs %s)" % (a.shape, b.shape))
     per, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
     print("restart: max relative difference per column %s (%d values differ)" % (per, int((a != b).sum())))
-    chk.check(worst <= 1e-10, "run 6000 + write/read_restart + run 600 equals run 6000 + run 600 (%.3g <= 1e-10)"
-              % worst)
+    chk.check(worst <= 1e-10, "read_restart + run 600 equals the writing process's run 600 after write_restart "
+              "(%.3g <= 1e-10)" % worst)
     # control: the same restart with the contact history of the pair style dropped
     lost = POUR_RESTART.replace("fix floor all", "pair_style none\npair_style tdem/gran\npair_coeff * * normal "
                                 "lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4\nfix floor all")
@@ -870,18 +874,19 @@ def part_corr_mpi():
         _, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
         chk.check(worst <= 1e-8, "correction %s: newton on (-np 2) equals newton off (-np 1) after 3000 steps to "
                   "round-off (%.3g <= 1e-8)" % (corr, worst))
-    # restart with a correction: run N + write/read_restart + run M equals run N + run M (2 ranks)
+    # restart with a correction: read_restart + run M equals the writing process's run M (2 ranks;
+    # the reference as in part_restart)
     pour = POUR.replace("vel 0 0 -1", "vel 0 0 -1 correction overlap")
     rest = POUR_RESTART.replace("vel 0 0 -1", "vel 0 0 -1 correction overlap")
-    lc.run(TDEM, pour + "run 6000\nrun 600\n" + DUMP.format(out="d.full"), wd, "in.full", np_=2, mpirun=MPIRUN)
-    lc.run(TDEM, pour + "run 6000\nwrite_restart pour.restart\n", wd, "in.first", np_=2, mpirun=MPIRUN)
+    lc.run(TDEM, pour + "run 6000\nwrite_restart pour.restart\nrun 600\n" + DUMP.format(out="d.full"), wd, "in.first",
+           np_=2, mpirun=MPIRUN)
     lc.run(TDEM, rest.format(m=600, out="d.rest"), wd, "in.rest", np_=2, mpirun=MPIRUN)
     _, a = lc.read_dump(os.path.join(wd, "d.full"))
     _, b = lc.read_dump(os.path.join(wd, "d.rest"))
     per, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
     print("restart with correction overlap: max rel diff per column %s" % per)
     chk.check(a.shape == b.shape and worst <= 1e-10,
-              "correction overlap: run 6000 + write/read_restart + run 600 equals run 6000 + run 600 (%.3g <= 1e-10)"
+              "correction overlap: read_restart + run 600 equals the writing process's run 600 (%.3g <= 1e-10)"
               % worst)
 
 
