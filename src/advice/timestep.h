@@ -48,7 +48,8 @@
 #include "contact/normal/continuous_potential.h"
 #include "contact/normal/extended.h"
 #include "contact/normal/hertz_damped.h"
-#include "contact/normal/input_checks.h"
+#include "contact/input_checks.h"
+#include "contact/material.h"
 #include "contact/normal/linear_viscoelastic.h"
 #include "contact/normal/power_law_hysteresis.h"
 #include "contact/normal/thornton.h"
@@ -101,23 +102,20 @@ struct Advice {
 };
 
 // ---------------------------------------------------------------- formulas
-// Shear modulus from Young's modulus and Poisson's ratio.
-inline double shear_modulus(double E, double nu) {
-  checks::positive("Young's modulus E", E);
-  if (!(nu > -1.0 && nu <= 0.5)) checks::fail("Poisson ratio nu", nu, "(-1, 0.5]");
-  return E / (2.0 * (1.0 + nu));
-}
+// Shear modulus from Young's modulus and Poisson's ratio (contact/material.h).
+using material::shear_modulus;
 
 // Rayleigh time of a sphere: T_R = pi R sqrt(rho/G) / (0.1631 nu + 0.8766).
 inline double rayleigh_time(double R, double rho, double G, double nu) {
   checks::positive("radius R", R);
   checks::positive("density rho", rho);
   checks::positive("shear modulus G", G);
-  if (!(nu > -1.0 && nu <= 0.5)) checks::fail("Poisson ratio nu", nu, "(-1, 0.5]");
+  checks::poisson("Poisson ratio nu", nu);
   return M_PI * R * std::sqrt(rho / G) / (0.1631 * nu + 0.8766);
 }
 
 inline double rayleigh_time(const Material& m) {
+  checks::poisson("Poisson ratio nu", m.poisson);
   return rayleigh_time(m.radius, m.density, shear_modulus(m.youngs, m.poisson), m.poisson);
 }
 

@@ -53,7 +53,7 @@
 #include <utility>
 #include <vector>
 
-#include "contact/normal/input_checks.h"
+#include "contact/input_checks.h"
 
 namespace tdem {
 namespace clumps {

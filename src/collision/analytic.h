@@ -66,7 +66,7 @@
 
 #include "contact/kinematics.h"
 #include "contact/normal/linear_viscoelastic.h"
-#include "contact/normal/input_checks.h"
+#include "contact/input_checks.h"
 #include "contact/tangential/common.h"
 #include "contact/tangential/cundall_strack.h"
 

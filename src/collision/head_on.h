@@ -34,7 +34,7 @@
 #include "contact/normal/continuous_potential.h"
 #include "contact/normal/extended.h"
 #include "contact/normal/hertz_damped.h"
-#include "contact/normal/input_checks.h"
+#include "contact/input_checks.h"
 #include "contact/normal/linear_viscoelastic.h"
 #include "contact/normal/power_law_hysteresis.h"
 #include "contact/normal/thornton.h"

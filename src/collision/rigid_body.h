@@ -25,7 +25,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact/normal/input_checks.h"
+#include "contact/input_checks.h"
 
 namespace tdem {
 namespace rigid_body {

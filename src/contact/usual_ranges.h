@@ -9,7 +9,7 @@
 
 #include <string>
 
-#include "normal/input_checks.h"
+#include "input_checks.h"
 
 namespace tdem {
 namespace usual {

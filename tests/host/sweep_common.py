@@ -10,7 +10,7 @@ CLASSES = {
     "pos": {"-1": "error", "0": "error", "1e300": "huge"},      # > 0, dimensional
     "nonneg": {"-1": "error", "0": "accept", "1e300": "huge"},  # >= 0, dimensional
     "e": {"-1": "error", "0": "error", "1e300": "error"},       # restitution (0, 1]
-    "nu": {"-1": "error", "0": "accept", "1e300": "error"},     # Poisson ratio (-1, 0.5] or (-1, 0.5)
+    "nu": {"-1": "error", "0": "accept", "1e300": "error"},     # Poisson ratio (-1, 0.5]
     "int0": {"-1": "error", "0": "accept", "0.5": "error", "1e300": "error"},  # an integer >= 0 (every)
     "int1": {"-1": "error", "0": "error", "0.5": "error", "1e300": "error"},   # an integer >= 1, capped
     "frac": {"-1": "error", "0": "error", "1e300": "error"},    # a fraction (0, 1]

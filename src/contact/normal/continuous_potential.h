@@ -20,7 +20,7 @@
 #include <stdexcept>
 
 #include "../kinematics.h"
-#include "input_checks.h"
+#include "../input_checks.h"
 #include "linear_viscoelastic.h"
 
 namespace tdem {

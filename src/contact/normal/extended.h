@@ -24,7 +24,7 @@
 
 #include "../kinematics.h"
 #include "hertz_damped.h"
-#include "input_checks.h"
+#include "../input_checks.h"
 #include "linear_viscoelastic.h"
 #include "velocity_fits.h"
 

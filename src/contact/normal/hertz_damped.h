@@ -24,7 +24,8 @@
 #include <string>
 
 #include "../kinematics.h"
-#include "input_checks.h"
+#include "../input_checks.h"
+#include "../material.h"
 #include "linear_viscoelastic.h"
 
 namespace tdem {
@@ -106,18 +107,8 @@ inline void validate(Damping d, const Params<double>& p) {
 }
 
 // ---------------------------------------------------------------- pair quantities
-// 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2. A rigid partner has E = +infinity.
-inline double effective_modulus(double E1, double nu1, double E2, double nu2) {
-  checks::positive("Young's modulus E1", E1 == INFINITY ? 1.0 : E1);
-  checks::positive("Young's modulus E2", E2 == INFINITY ? 1.0 : E2);
-  for (double nu : {nu1, nu2})
-    if (!(nu > -1.0 && nu <= 0.5))
-      throw std::domain_error("Poisson ratio nu = " + checks::number(nu) + " is outside the allowed range (-1, 0.5]");
-  const double c1 = E1 == INFINITY ? 0.0 : (1.0 - nu1 * nu1) / E1;
-  const double c2 = E2 == INFINITY ? 0.0 : (1.0 - nu2 * nu2) / E2;
-  if (!(c1 + c2 > 0.0)) throw std::domain_error("effective modulus: both partners are rigid (E = inf)");
-  return 1.0 / (c1 + c2);
-}
+// 1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 (a rigid partner: E = +infinity): ../material.h
+using material::effective_modulus;
 
 // 1/R* = 1/R1 + 1/R2; a plane wall has R2 = +infinity.
 inline double effective_radius(double R1, double R2) {

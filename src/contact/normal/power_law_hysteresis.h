@@ -25,7 +25,7 @@
 #include <cmath>
 
 #include "../kinematics.h"
-#include "input_checks.h"
+#include "../input_checks.h"
 
 namespace tdem {
 namespace power_law {

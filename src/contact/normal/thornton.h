@@ -22,7 +22,7 @@
 #include <stdexcept>
 
 #include "../kinematics.h"
-#include "input_checks.h"
+#include "../input_checks.h"
 
 namespace tdem {
 namespace thornton {

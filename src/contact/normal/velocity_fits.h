@@ -21,7 +21,7 @@
 #include <cmath>
 #include <string>
 
-#include "input_checks.h"
+#include "../input_checks.h"
 
 namespace tdem {
 namespace fits {

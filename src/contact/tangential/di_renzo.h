@@ -11,7 +11,7 @@
 // gross sliding (Di Renzo & Di Maio's argument). G* from effective_shear_modulus() in parameters.h.
 #pragma once
 
-#include "../normal/input_checks.h"
+#include "../input_checks.h"
 #include "common.h"
 #include "linear_spring.h"
 #include "mindlin_no_slip.h"

@@ -9,7 +9,7 @@
 // value says whether the Coulomb limit is active (gamma_t |v_t| > F_lim), i.e. gross sliding.
 #pragma once
 
-#include "../normal/input_checks.h"
+#include "../input_checks.h"
 #include "common.h"
 
 namespace tdem {

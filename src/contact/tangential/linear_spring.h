@@ -26,7 +26,7 @@
 // Both rules act on the local copy also when update == false, so the force is the same.
 #pragma once
 
-#include "../normal/input_checks.h"
+#include "../input_checks.h"
 #include "common.h"
 
 namespace tdem {

@@ -90,7 +90,7 @@
 // G* from effective_shear_modulus() in parameters.h.
 #pragma once
 
-#include "../normal/input_checks.h"
+#include "../input_checks.h"
 #include "common.h"
 #include "masing.h"
 

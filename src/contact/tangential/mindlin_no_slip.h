@@ -12,7 +12,7 @@
 // G* from effective_shear_modulus() in parameters.h.
 #pragma once
 
-#include "../normal/input_checks.h"
+#include "../input_checks.h"
 #include "common.h"
 #include "linear_spring.h"
 

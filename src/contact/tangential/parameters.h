@@ -26,38 +26,18 @@
 #include <cmath>
 #include <limits>
 
-#include "../normal/input_checks.h"
+#include "../input_checks.h"
+#include "../material.h"
 
 namespace tdem {
 namespace tangential {
 
-inline double shear_modulus(double E, double nu) {
-  checks::positive("Young's modulus E", E);
-  if (!(nu > -1.0 && nu < 0.5)) checks::fail("Poisson's ratio nu", nu, "(-1, 0.5)");
-  return E / (2.0 * (1.0 + nu));
-}
-
-// 1/G* = (2-nu1)/G1 + (2-nu2)/G2. G2 = infinity (or <= 0 is rejected) for a rigid wall: pass
-// std::numeric_limits<double>::infinity().
-inline double effective_shear_modulus(double G1, double nu1, double G2, double nu2) {
-  checks::positive("shear modulus G1", G1);
-  if (!(G2 > 0.0)) checks::fail("shear modulus G2", G2, "(0, inf]");
-  if (!(nu1 > -1.0 && nu1 < 0.5)) checks::fail("Poisson's ratio nu1", nu1, "(-1, 0.5)");
-  if (!(nu2 > -1.0 && nu2 < 0.5)) checks::fail("Poisson's ratio nu2", nu2, "(-1, 0.5)");
-  const double c2 = std::isinf(G2) ? 0.0 : (2.0 - nu2) / G2;
-  return 1.0 / ((2.0 - nu1) / G1 + c2);
-}
-
-inline double effective_shear_modulus_from_E(double E1, double nu1, double E2, double nu2) {
-  const double G2 = std::isinf(E2) ? E2 : shear_modulus(E2, nu2);
-  return effective_shear_modulus(shear_modulus(E1, nu1), nu1, G2, nu2);
-}
-
+// The elastic pair properties live in ../material.h (one definition for every law and tool).
+using material::effective_shear_modulus;
+using material::effective_shear_modulus_from_E;
+using material::shear_modulus;
 inline double effective_youngs_modulus(double E1, double nu1, double E2, double nu2) {
-  checks::positive("Young's modulus E1", E1);
-  if (!(E2 > 0.0)) checks::fail("Young's modulus E2", E2, "(0, inf]");
-  const double c2 = std::isinf(E2) ? 0.0 : (1.0 - nu2 * nu2) / E2;
-  return 1.0 / ((1.0 - nu1 * nu1) / E1 + c2);
+  return material::effective_modulus(E1, nu1, E2, nu2);
 }
 
 // Mindlin no-slip tangential stiffness 8 G* a with a = sqrt(R* xi).
@@ -65,17 +45,7 @@ inline double mindlin_stiffness(double gstar, double reff, double xi) {
   return 8.0 * gstar * std::sqrt(reff * (xi > 0.0 ? xi : 0.0));
 }
 
-// kappa = k_t/k_n of Hertz-Mindlin (no-slip tangential over Hertz normal tangent stiffness): 4 G*/E*.
-inline double kappa_hertz_mindlin(double gstar, double estar) {
-  checks::positive("effective shear modulus G*", gstar);
-  checks::positive("effective Young's modulus E*", estar);
-  return 4.0 * gstar / estar;
-}
-// Like materials (same E and nu on both sides): 2(1-nu)/(2-nu).
-inline double kappa_hertz_mindlin(double nu) {
-  if (!(nu > -1.0 && nu < 0.5)) checks::fail("Poisson's ratio nu", nu, "(-1, 0.5)");
-  return 2.0 * (1.0 - nu) / (2.0 - nu);
-}
+using material::kappa_hertz_mindlin;  // 4 G*/E*; like materials 2 (1 - nu)/(2 - nu)
 
 inline double stiffness_from_kappa(double kappa, double kn) {
   checks::positive("stiffness ratio kappa = k_t/k_n", kappa);

@@ -29,7 +29,7 @@
 // The perpendicular displacement d_perp changes F_perp with the current k_t. |F| <= F_lim always.
 #pragma once
 
-#include "../normal/input_checks.h"
+#include "../input_checks.h"
 #include "common.h"
 #include "masing.h"
 

@@ -553,9 +553,9 @@ Oblique read_oblique(Args& a, const Bodies& b, double speed, double angle_deg) {
     if (a.has("--E")) {
       need("--nu");
       const double E1 = a.positive("--E");
-      const double nu1 = a.number("--nu", -1.0, 0.5, true, true, "(-1, 0.5)");
+      const double nu1 = a.poisson("--nu");
       const double E2 = a.has("--E2") ? a.positive("--E2", true) : E1;
-      const double nu2 = a.has("--nu2") ? a.number("--nu2", -1.0, 0.5, true, true, "(-1, 0.5)") : nu1;
+      const double nu2 = a.has("--nu2") ? a.poisson("--nu2") : nu1;
       o.gstar = tangential::effective_shear_modulus_from_E(E1, nu1, E2, nu2);
       o.estar = tangential::effective_youngs_modulus(E1, nu1, E2, nu2);
     }

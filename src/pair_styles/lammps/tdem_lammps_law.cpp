@@ -78,7 +78,7 @@ void non_negative(LAMMPS *lmp, const std::string &where, const std::string &name
 
 double poisson(LAMMPS *lmp, const std::string &where, const std::string &name, const char *text) {
   const double nu = number(lmp, where, name, text);
-  if (!(nu > -1.0 && nu <= 0.5))
+  if (!tdem::checks::poisson_ok(nu))
     fail(lmp, where, name + " = " + num(nu) + " is outside the allowed range (-1, 0.5]");
   unusual(lmp, where, name + ": ", tdem::usual::poisson(nu));
   return nu;
@@ -132,7 +132,7 @@ int parse_hertz(LAMMPS *lmp, const std::string &where, int narg, char **arg, int
                              std::to_string(have));
       c.hdamp = HDAMP_TSUJI;
       c.he = number(lmp, where, "normal hertz damping tsuji E", arg[iarg]);
-      if (!(c.he > 0.0 && c.he <= 1.0))
+      if (!tdem::checks::restitution_ok(c.he))
         fail(lmp, where,
              "normal hertz damping tsuji E = " + num(c.he) + " is outside the allowed range (0, 1]");
       iarg += 1;
@@ -354,15 +354,11 @@ int parse_tangential(LAMMPS *lmp, const std::string &where, const std::string &n
     count(tsuji ? "E NU [E2 NU2] RATIO MU" : "E NU [E2 NU2] MU", base, base + 2);
     c.tE1 = val(0, "E");
     positive(lmp, where, t + "E (Young's modulus)", c.tE1);
-    c.tnu1 = number(lmp, where, t + "NU", arg[iarg + 1]);
-    if (!(c.tnu1 > -1.0 && c.tnu1 < 0.5))
-      fail(lmp, where, t + "NU (Poisson ratio) = " + num(c.tnu1) + " is outside the allowed range (-1, 0.5)");
+    c.tnu1 = poisson(lmp, where, t + "NU (Poisson ratio)", arg[iarg + 1]);
     if (n == base + 2) {
       c.tE2 = val(2, "E2");
       positive(lmp, where, t + "E2 (Young's modulus)", c.tE2);
-      c.tnu2 = number(lmp, where, t + "NU2", arg[iarg + 3]);
-      if (!(c.tnu2 > -1.0 && c.tnu2 < 0.5))
-        fail(lmp, where, t + "NU2 (Poisson ratio) = " + num(c.tnu2) + " is outside the allowed range (-1, 0.5)");
+      c.tnu2 = poisson(lmp, where, t + "NU2 (Poisson ratio)", arg[iarg + 3]);
     } else {
       c.tE2 = c.tE1;
       c.tnu2 = c.tnu1;
@@ -465,7 +461,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
     c.mode = MODE_RESTITUTION;
     c.e = number(lmp, where, "normal lsd restitution E", arg[iarg]);
     c.tc = number(lmp, where, "normal lsd restitution TC", arg[iarg + 1]);
-    if (!(c.e > 0.0 && c.e <= 1.0))
+    if (!tdem::checks::restitution_ok(c.e))
       fail(lmp, where,
            "normal lsd restitution E = " + num(c.e) + " is outside the allowed range (0, 1]");
     positive(lmp, where, "normal lsd restitution TC (contact time)", c.tc);

@@ -36,7 +36,7 @@ bool ok(Range r, double v) {
   switch (r) {
     case Range::positive: return v > 0.0;
     case Range::non_negative: return v >= 0.0;
-    case Range::restitution: return v > 0.0 && v <= 1.0;
+    case Range::restitution: return tdem::checks::restitution_ok(v);
     case Range::finite: return true;
   }
   return false;
