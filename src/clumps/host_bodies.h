@@ -282,7 +282,18 @@ inline PlacementResult place_clumps(const Template& t, const PlacementInput& in)
   };
   std::unordered_map<long long, std::vector<int>> grid;  // index into `all`
   std::vector<Sphere> all = in.existing;
-  for (int i = 0; i < static_cast<int>(all.size()); ++i) grid[key(all[i].x)].push_back(i);
+  // bounding box of every sphere centre in the grid (the image search skips what lies outside)
+  Vec3 bmin{INFINITY, INFINITY, INFINITY}, bmax{-INFINITY, -INFINITY, -INFINITY};
+  auto grow = [&](const Vec3& p) {
+    for (int d = 0; d < 3; ++d) {
+      bmin[d] = std::min(bmin[d], p[d]);
+      bmax[d] = std::max(bmax[d], p[d]);
+    }
+  };
+  for (int i = 0; i < static_cast<int>(all.size()); ++i) {
+    grid[key(all[i].x)].push_back(i);
+    grow(all[i].x);
+  }
   SplitMix64 rng(in.seed * 0x9E3779B97F4A7C15ull + 0x5DEECE66Dull);
   long long failures = 0;
   std::vector<Vec3> ps(ns);
@@ -309,6 +320,10 @@ inline PlacementResult place_clumps(const Template& t, const PlacementInput& in)
             if ((ix && !(in.period[0] > 0.0)) || (iy && !(in.period[1] > 0.0)) || (iz && !(in.period[2] > 0.0)))
               continue;
             const Vec3 img{ps[k][0] + ix * in.period[0], ps[k][1] + iy * in.period[1], ps[k][2] + iz * in.period[2]};
+            // an image whose 27 cells lie outside the box of all placed spheres finds nothing
+            bool near = true;
+            for (int d = 0; d < 3; ++d) near = near && img[d] + cell >= bmin[d] && img[d] - cell <= bmax[d];
+            if (!near) continue;
             for (int dx = -1; ok && dx <= 1; ++dx)
               for (int dy = -1; ok && dy <= 1; ++dy)
                 for (int dz = -1; ok && dz <= 1; ++dz) {
@@ -330,6 +345,7 @@ inline PlacementResult place_clumps(const Template& t, const PlacementInput& in)
       res.spheres.push_back(ps[k]);
       all.push_back({ps[k], t.body[k].r});
       grid[key(ps[k])].push_back(static_cast<int>(all.size()) - 1);
+      grow(ps[k]);
     }
   }
   res.complete = true;
