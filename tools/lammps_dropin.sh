@@ -12,7 +12,7 @@
 #   - the style sources flat (pair_tdem_gran.*, fix_tdem_*.*, compute_tdem_*.*, tdem_lammps_law.*,
 #     lammps_compat.h, ...): LAMMPS's build compiles every src/*.cpp and registers every style
 #     header with a PairStyle/FixStyle/ComputeStyle block;
-#   - tdem's host-free headers under their own paths (contact/, clumps/, grate/, advice/,
+#   - tdem's host-free headers under their own paths (contact/, collision/, fixes/,
 #     integrators/), as the styles include them ("contact/normal/hertz_damped.h");
 #   - tdem_lammps_features.h, the API features of this tree (the compile checks of tdem's build).
 # A list of the copied files is kept in LAMMPS_TREE/src/tdem_dropin_files.txt.
@@ -29,7 +29,7 @@ list="$dst/tdem_dropin_files.txt"
 
 if [ -f "$list" ]; then  # remove what an earlier run copied
   while IFS= read -r f; do rm -f "$dst/$f"; done <"$list"
-  for d in contact collision clumps grate advice integrators; do
+  for d in contact collision fixes integrators; do
     [ -d "$dst/$d" ] && find "$dst/$d" -depth -type d -empty -delete
   done
   rm -f "$list"
@@ -44,15 +44,16 @@ copy() {  # copy SRC to dst/REL and record it
 }
 # 1. the styles, flat (the tdem-lammps registration table and the plugin entry are not needed)
 for f in "$here"/src/pair_styles/lammps/*.{h,cpp} "$here"/src/integrators/lammps/*.{h,cpp} \
-         "$here"/src/{grate,advice,clumps}/lammps/*.{h,cpp}; do
+         "$here"/src/fixes/*/lammps/*.{h,cpp} "$here"/src/fixes/*/hosts/*.{h,cpp} \
+         "$here"/src/fixes/lammps/*.h; do
   b="$(basename "$f")"
   case "$b" in tdem_lammps_styles.*|*_styles.cpp) continue ;; esac
   copy "$f" "$b"
 done
-# 2. the host-free headers, under their paths (and the module adapters' headers, which some
-#    styles include by path: "clumps/lammps/clump_correction_host.h")
-(cd "$here/src" && find contact collision clumps grate advice integrators -name '*.h' \
-   -not -path '*/liggghts/*') | while IFS= read -r rel; do copy "$here/src/$rel" "$rel"; done
+# 2. the host-free headers, under their paths ("contact/normal/hertz_damped.h",
+#    "fixes/grate/geometry.h"); the hosts' adapters went flat in step 1
+(cd "$here/src" && find contact collision fixes integrators -name '*.h' \
+   -not -path '*/liggghts/*' -not -path '*/lammps/*' -not -path '*/hosts/*') | while IFS= read -r rel; do copy "$here/src/$rel" "$rel"; done
 # 3. the API features of this LAMMPS tree
 tmp="$(mktemp -d)"
 if ! cmake -S "$here/tools/lammps_features" -B "$tmp" -DLAMMPS_HEADER_DIR="$dst" \

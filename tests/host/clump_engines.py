@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-2.0-or-later
 """The same `fix tdem/clump ... insert N region R seed S` gives the same clumps in LAMMPS and in
-LIGGGHTS (issue 19: both fixes place them with src/clumps/host_bodies.h).
+LIGGGHTS (issue 19: both fixes place them with src/fixes/clumps/host_bodies.h).
 
 Both engines insert 200 tetra clumps (and 100 rods in a second region, after them) into the same
 box around one existing sphere, with the same seeds, and write the atoms after `run 0`. Asserted:

@@ -35,7 +35,8 @@ def verdict(name, rc, out, expect, words, host_words=()):
     own parser). Returns [(ok, message)] and the counter to raise ('crash', 'silent', 'unnamed' or
     None)."""
     err = [l for l in out.splitlines() if l.startswith("ERROR")]
-    first = err[0][:170] if err else "no ERROR line"
+    tail = out.strip().splitlines()[-2:] if out.strip() else ["(no output)"]
+    first = err[0][:170] if err else "no ERROR line; the output ends: " + " | ".join(l[:120] for l in tail)
     if rc < 0 or rc >= 128 or ("Signal" in out and not err):
         return [(False, "%s: crashed (exit %d)" % (name, rc))], "crash"
     if expect == "accept" or (expect == "huge" and rc == 0):

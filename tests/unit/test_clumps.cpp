@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Multi-sphere clump core (src/clumps/): template mass properties against closed forms (single
+// Multi-sphere clump core (src/fixes/clumps/): template mass properties against closed forms (single
 // sphere, non-overlapping spheres by the parallel-axis theorem, two overlapping spheres as a solid
 // of revolution / lens volume), convergence with resolution, principal axes, the text format;
 // rigid-body rotation schemes on the torque-free asymmetric top (energy and angular momentum over
@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "clumps/contact_tally.h"
-#include "clumps/multi_contact.h"
-#include "clumps/rigid_body.h"
-#include "clumps/template.h"
+#include "contact/multi_contact/contact_tally.h"
+#include "contact/multi_contact/multi_contact.h"
+#include "fixes/clumps/rigid_body.h"
+#include "fixes/clumps/template.h"
 
 using namespace tdem::clumps;
 using tdem::ContactEnd;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Moving grate core (src/grate): bar kinematics against closed forms, grate geometry, VTK output,
+// Moving grate core (src/fixes/grate): bar kinematics against closed forms, grate geometry, VTK output,
 // and the mixing measures of physics_reference.md 7.2 on constructed beds.
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "grate/geometry.h"
-#include "grate/kinematics.h"
-#include "grate/mixing.h"
+#include "fixes/grate/geometry.h"
+#include "fixes/grate/kinematics.h"
+#include "fixes/mixing/mixing.h"
 
 using namespace tdem::grate;
 namespace mx = tdem::grate::mixing;

@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "advice/timestep.h"
+#include "fixes/timestep/timestep.h"
 #include "contact/material.h"
 #include "contact/normal/hertz_damped.h"
 #include "contact/tangential/parameters.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// Time-step advice (src/advice/timestep.h):
+// Time-step advice (src/fixes/timestep/timestep.h):
 //  * closed forms: the linear critical step 2/omega (velocity Verlet undamped) and
 //    2 (sqrt(1 + zeta^2) - zeta)/omega (symplectic Euler, velocity Verlet damped); the Rayleigh
 //    time against a hand calculation; the Hertz contact time, largest overlap and tangent
@@ -22,7 +22,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "advice/timestep.h"
+#include "fixes/timestep/timestep.h"
 #include "collision/head_on.h"
 #include "collision/integrate_impact.h"
 #include "collision/oblique.h"

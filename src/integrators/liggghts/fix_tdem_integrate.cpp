@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: fix tdem/integrate (see fix_tdem_integrate.h and docs/liggghts.md).
 #include "fix_tdem_integrate.h"
+#include "fixes/liggghts/style_maps.h"
 
 #include <mpi.h>
 
@@ -37,7 +38,7 @@ std::string fmt_double(double x) {
 
 /* ---------------------------------------------------------------------- */
 
-FixTdemIntegrate::FixTdemIntegrate(LAMMPS* lmp, int narg, char** arg)
+FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS* lmp, int narg, char** arg)
     : Fix(lmp, narg, arg),
       scheme_(ti::Scheme::velocity_verlet),
       rotation_(true),
@@ -141,22 +142,22 @@ FixTdemIntegrate::FixTdemIntegrate(LAMMPS* lmp, int narg, char** arg)
   atom->add_callback(1);
 }
 
-FixTdemIntegrate::~FixTdemIntegrate() {
+FixTDEMIntegrate::~FixTDEMIntegrate() {
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
   memory->destroy(row_);
 }
 
-int FixTdemIntegrate::setmask() {
+int FixTDEMIntegrate::setmask() {
   int mask = 0;
   mask |= INITIAL_INTEGRATE;
   mask |= FINAL_INTEGRATE;
   return mask;
 }
 
-double FixTdemIntegrate::inertia_factor() const { return domain->dimension == 2 ? 0.5 : 0.4; }
+double FixTDEMIntegrate::inertia_factor() const { return domain->dimension == 2 ? 0.5 : 0.4; }
 
-void FixTdemIntegrate::init() {
+void FixTDEMIntegrate::init() {
   // finite-size spheres only (the angular acceleration divides by r^2), as fix nve/sphere
   const double* radius = atom->radius;
   const int* mask = atom->mask;
@@ -171,7 +172,7 @@ void FixTdemIntegrate::init() {
                           .c_str());
 }
 
-void FixTdemIntegrate::restart_all(const char* why) {
+void FixTDEMIntegrate::restart_all(const char* why) {
   int started = 0, all = 0;
   for (int i = 0; i < atom->nlocal; i++)
     if (row_[i][0] != 0.0) started++;
@@ -184,21 +185,21 @@ void FixTdemIntegrate::restart_all(const char* why) {
 }
 
 // A new run continues the histories, unless the time step changed since they were built.
-void FixTdemIntegrate::setup(int) {
+void FixTDEMIntegrate::setup(int) {
   if (update->dt != dt_hist_) {
     restart_all(("the time step changed from " + fmt_double(dt_hist_) + " to " + fmt_double(update->dt)).c_str());
     dt_hist_ = update->dt;
   }
 }
 
-void FixTdemIntegrate::reset_dt() { setup(0); }
+void FixTDEMIntegrate::reset_dt() { setup(0); }
 
 /* ---------------------------------------------------------------------- */
 
 // Acceleration of atom i (into at) and, with rotation, its angular acceleration (into ar) from
 // the present force and torque.
 template <bool R>
-void FixTdemIntegrate::accelerations(int i, double ftm2v, double inertia, double* at, double* ar) const {
+void FixTDEMIntegrate::accelerations(int i, double ftm2v, double inertia, double* at, double* ar) const {
   const double c = ftm2v / atom->rmass[i];
   for (int k = 0; k < 3; k++) at[k] = atom->f[i][k] * c;
   if (R) {
@@ -208,7 +209,7 @@ void FixTdemIntegrate::accelerations(int i, double ftm2v, double inertia, double
   }
 }
 
-template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_initial() {
+template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial() {
   using KT = ti::Kernel<S, true>;
   using KR = ti::Kernel<S, false>;
   double** x = atom->x;
@@ -241,7 +242,7 @@ template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_initial() {
   }
 }
 
-template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_final() {
+template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final() {
   using KT = ti::Kernel<S, true>;
   using KR = ti::Kernel<S, false>;
   double** x = atom->x;
@@ -267,7 +268,7 @@ template <ti::Scheme S, bool R> void FixTdemIntegrate::loop_final() {
   }
 }
 
-void FixTdemIntegrate::initial_integrate(int) {
+void FixTDEMIntegrate::initial_integrate(int) {
   ti::dispatch(scheme_, [&](auto tag) {
     constexpr ti::Scheme S = decltype(tag)::value;
     if (rotation_)
@@ -278,7 +279,7 @@ void FixTdemIntegrate::initial_integrate(int) {
   });
 }
 
-void FixTdemIntegrate::final_integrate() {
+void FixTDEMIntegrate::final_integrate() {
   ti::dispatch(scheme_, [&](auto tag) {
     constexpr ti::Scheme S = decltype(tag)::value;
     if (rotation_)
@@ -289,11 +290,11 @@ void FixTdemIntegrate::final_integrate() {
   });
 }
 
-double FixTdemIntegrate::memory_usage() { return static_cast<double>(nmax_) * stride_ * sizeof(double); }
+double FixTDEMIntegrate::memory_usage() { return static_cast<double>(nmax_) * stride_ * sizeof(double); }
 
 /* ---------------------------------------------------------------------- per-atom rows */
 
-void FixTdemIntegrate::grow_arrays(int n) {
+void FixTDEMIntegrate::grow_arrays(int n) {
   if (n <= nmax_) return;
   memory->grow(row_, n, stride_, "tdem/integrate:row");
   for (int i = nmax_; i < n; i++)
@@ -301,27 +302,27 @@ void FixTdemIntegrate::grow_arrays(int n) {
   nmax_ = n;
 }
 
-void FixTdemIntegrate::copy_arrays(int i, int j, int) {
+void FixTDEMIntegrate::copy_arrays(int i, int j, int) {
   for (int m = 0; m < stride_; m++) row_[j][m] = row_[i][m];
 }
 
 // a new atom (create_atoms, fix insert/*, ...): started after its first force
-void FixTdemIntegrate::set_arrays(int i) {
+void FixTDEMIntegrate::set_arrays(int i) {
   for (int m = 0; m < stride_; m++) row_[i][m] = 0.0;
 }
 
-int FixTdemIntegrate::pack_exchange(int i, double* buf) {
+int FixTDEMIntegrate::pack_exchange(int i, double* buf) {
   for (int m = 0; m < stride_; m++) buf[m] = row_[i][m];
   return stride_;
 }
 
-int FixTdemIntegrate::unpack_exchange(int nlocal, double* buf) {
+int FixTDEMIntegrate::unpack_exchange(int nlocal, double* buf) {
   for (int m = 0; m < stride_; m++) row_[nlocal][m] = buf[m];
   return stride_;
 }
 
 // per-atom restart record: [number of values incl. this one, scheme code, row ...]
-int FixTdemIntegrate::pack_restart(int i, double* buf) {
+int FixTDEMIntegrate::pack_restart(int i, double* buf) {
   int n = 0;
   buf[n++] = stride_ + 2;
   buf[n++] = code_;
@@ -329,7 +330,7 @@ int FixTdemIntegrate::pack_restart(int i, double* buf) {
   return n;
 }
 
-void FixTdemIntegrate::unpack_restart(int nlocal, int nth) {
+void FixTDEMIntegrate::unpack_restart(int nlocal, int nth) {
   double** extra = atom->extra;
   int m = 0;
   for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
@@ -342,12 +343,12 @@ void FixTdemIntegrate::unpack_restart(int nlocal, int nth) {
   for (int k = 0; k < stride_; k++) row_[nlocal][k] = extra[nlocal][m + 2 + k];
 }
 
-int FixTdemIntegrate::maxsize_restart() { return stride_ + 2; }
+int FixTDEMIntegrate::maxsize_restart() { return stride_ + 2; }
 
-int FixTdemIntegrate::size_restart(int) { return stride_ + 2; }
+int FixTDEMIntegrate::size_restart(int) { return stride_ + 2; }
 
 // global restart record: scheme code, time step of the histories, doubles per atom
-void FixTdemIntegrate::write_restart(FILE* fp) {
+void FixTDEMIntegrate::write_restart(FILE* fp) {
   if (comm->me != 0) return;
   const double list[3] = {static_cast<double>(code_), dt_hist_, static_cast<double>(stride_)};
   const int size = sizeof(list);
@@ -355,7 +356,7 @@ void FixTdemIntegrate::write_restart(FILE* fp) {
   fwrite(list, sizeof(double), 3, fp);
 }
 
-void FixTdemIntegrate::restart(char* buf) {
+void FixTDEMIntegrate::restart(char* buf) {
   double list[3];
   std::memcpy(list, buf, sizeof list);
   const int stored_code = static_cast<int>(list[0]);
@@ -378,32 +379,10 @@ void FixTdemIntegrate::restart(char* buf) {
 
 /* ---------------------------------------------------------------------- registration */
 
-namespace {
-
-// LIGGGHTS 3.8 keeps Modify::fix_map private and has no style registration API. An explicit
-// template instantiation may name a private member ([temp.explicit]); it hands the member
-// pointer to a friend function, which this file then calls.
-using FixCreatorFn = Fix* (*)(LAMMPS*, int, char**);
-using FixMap = std::map<std::string, FixCreatorFn>;
-struct FixMapMember {
-  using type = FixMap* Modify::*;
-};
-template <class Tag, typename Tag::type M> struct ExposeMember {
-  friend typename Tag::type member_pointer(Tag) { return M; }
-};
-FixMapMember::type member_pointer(FixMapMember);
-template struct ExposeMember<FixMapMember, &Modify::fix_map>;
-
-Fix* create_tdem_integrate(LAMMPS* lmp, int narg, char** arg) { return new FixTdemIntegrate(lmp, narg, arg); }
-
-}  // namespace
-
 namespace tdem {
 namespace liggghts {
 void register_fixes(LAMMPS_NS::LAMMPS* lmp) {
-  if (!lmp || !lmp->modify) return;
-  FixMap* map = lmp->modify->*member_pointer(FixMapMember());
-  if (map) (*map)["tdem/integrate"] = &create_tdem_integrate;
+  add_fix_style(lmp, "tdem/integrate", &create_fix<FixTDEMIntegrate>);
 }
 }  // namespace liggghts
 }  // namespace tdem

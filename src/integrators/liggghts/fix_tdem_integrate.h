@@ -41,10 +41,10 @@
 
 namespace LAMMPS_NS {
 
-class FixTdemIntegrate : public Fix {
+class FixTDEMIntegrate : public Fix {
  public:
-  FixTdemIntegrate(class LAMMPS*, int, char**);
-  ~FixTdemIntegrate();
+  FixTDEMIntegrate(class LAMMPS*, int, char**);
+  ~FixTDEMIntegrate();
   int setmask();
   void init();
   void setup(int);

@@ -25,7 +25,7 @@ FixStyle(tdem/wall/gran,FixTDEMWallGran);
 #include "fix.h"
 #include "tdem_lammps_law.h"
 
-#include "clumps/lammps/clump_correction_host.h"
+#include "clump_correction_host.h"
 
 namespace LAMMPS_NS {
 

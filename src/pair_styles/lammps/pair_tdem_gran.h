@@ -33,7 +33,7 @@ PairStyle(tdem/gran,PairTDEMGran);
 #include "pair.h"
 #include "tdem_lammps_law.h"
 
-#include "clumps/lammps/clump_correction_host.h"
+#include "clump_correction_host.h"
 
 #include <vector>
 

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "tdem_lammps_styles.h"
 
-#include "fix_tdem_integrate.h"
 #include "fix_tdem_wall_gran.h"
 #include "force.h"
 #include "lammps.h"
@@ -16,27 +15,12 @@ using namespace LAMMPS_NS;
 namespace tdem_lammps {
 
 namespace {
-Pair *create_pair_tdem_gran(LAMMPS *lmp)
-{
-  return new PairTDEMGran(lmp);
-}
-Fix *create_fix_tdem_wall_gran(LAMMPS *lmp, int narg, char **arg)
-{
-  return new FixTDEMWallGran(lmp, narg, arg);
-}
-Fix *create_fix_tdem_integrate(LAMMPS *lmp, int narg, char **arg)
-{
-  return new FixTDEMIntegrate(lmp, narg, arg);
-}
-
 const StyleEntry core_table[] = {
     {StyleKind::pair, "tdem/gran", "tdem pair style tdem/gran (lsd + cundall_strack)",
-     (void *) &create_pair_tdem_gran},
+     (void *) &create_pair<PairTDEMGran>},
     {StyleKind::fix, "tdem/wall/gran", "tdem fix style tdem/wall/gran (lsd + cundall_strack)",
-     (void *) &create_fix_tdem_wall_gran},
-    {StyleKind::fix, "tdem/integrate", "tdem fix style tdem/integrate (time integration schemes)",
-     (void *) &create_fix_tdem_integrate},
-    {StyleKind::pair, nullptr, nullptr, nullptr}};
+     (void *) &create_fix<FixTDEMWallGran>},
+    {}};
 }  // namespace
 
 const StyleEntry *style_table()
@@ -47,6 +31,7 @@ const StyleEntry *style_table()
       for (; t->name; ++t) v.push_back(*t);
     };
     add(core_table);
+    add(integrate_styles());
 #ifdef TDEM_LMP_MODULE_GRATE
     add(grate_styles());
 #endif

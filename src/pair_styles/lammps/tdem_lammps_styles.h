@@ -5,7 +5,10 @@
 
 namespace LAMMPS_NS {
 class LAMMPS;
-}
+class Pair;
+class Fix;
+class Compute;
+}  // namespace LAMMPS_NS
 
 namespace tdem_lammps {
 
@@ -18,12 +21,31 @@ struct StyleEntry {
   void *creator;  // Pair *(*)(LAMMPS *), Fix *(*)(LAMMPS *, int, char **) or Compute *(*)(...)
 };
 
+// Creators of the table entries: (void *) &create_fix<FixTDEMClump>. A table ends with {}.
+template <class T>
+LAMMPS_NS::Pair *create_pair(LAMMPS_NS::LAMMPS *lmp)
+{
+  return new T(lmp);
+}
+template <class T>
+LAMMPS_NS::Fix *create_fix(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
+template <class T>
+LAMMPS_NS::Compute *create_compute(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
+{
+  return new T(lmp, narg, arg);
+}
+
 // Styles of the optional modules (CMake options TDEM_LAMMPS_<MODULE>, default ON), each a table
-// terminated by an entry with name == nullptr; defined in src/<module>/lammps/*_styles.cpp.
-const StyleEntry *grate_styles();     // TDEM_LMP_MODULE_GRATE    (src/grate/lammps)
-const StyleEntry *mixing_styles();    // TDEM_LMP_MODULE_MIXING   (src/grate/lammps)
-const StyleEntry *timestep_styles();  // TDEM_LMP_MODULE_TIMESTEP (src/advice/lammps)
-const StyleEntry *clump_styles();     // TDEM_LMP_MODULE_CLUMP    (src/clumps/lammps)
+// terminated by an entry with name == nullptr; defined in src/fixes/<module>/lammps/*_styles.cpp
+// (integrate_styles: src/integrators/lammps/integrate_styles.cpp).
+const StyleEntry *integrate_styles();  // fix tdem/integrate, always on (src/integrators/lammps)
+const StyleEntry *grate_styles();      // TDEM_LMP_MODULE_GRATE    (src/fixes/grate/lammps)
+const StyleEntry *mixing_styles();     // TDEM_LMP_MODULE_MIXING   (src/fixes/mixing/lammps)
+const StyleEntry *timestep_styles();   // TDEM_LMP_MODULE_TIMESTEP (src/fixes/timestep/lammps)
+const StyleEntry *clump_styles();      // TDEM_LMP_MODULE_CLUMP    (src/fixes/clumps/lammps)
 
 // The table of all styles (core + enabled modules), terminated by an entry with name == nullptr.
 const StyleEntry *style_table();

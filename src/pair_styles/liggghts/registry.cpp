@@ -31,7 +31,6 @@
 #include "lammps.h"
 #include "utils.h"
 
-#include "integrators/liggghts/fix_tdem_integrate.h"
 #include "register_combo.h"
 #include "tdem_liggghts_ids.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: surface model `tdem/clump`, through which fix tdem/clump
-// (src/clumps/liggghts) applies its multiple-contact correction (src/clumps/multi_contact.h,
+// (src/fixes/clumps/liggghts) applies its multiple-contact correction (src/contact/multi_contact/multi_contact.h,
 // docs/clumps_liggghts.md) to the contacts of a pair style or wall fix that asks for it:
 //
 //   pair_style gran model M tangential T surface tdem/clump

@@ -22,11 +22,13 @@ void register_styles();
 void attach(LAMMPS_NS::LAMMPS* lmp);
 
 // Fix/compute styles of the optional modules (CMake options TDEM_LIGGGHTS_<MODULE>, default ON),
-// inserted into the instance's style maps by attach(); defined in src/<module>/liggghts/.
-void register_grate(LAMMPS_NS::LAMMPS* lmp);     // TDEM_LIG_MODULE_GRATE    (src/grate/liggghts)
-void register_mixing(LAMMPS_NS::LAMMPS* lmp);    // TDEM_LIG_MODULE_MIXING   (src/grate/liggghts)
-void register_timestep(LAMMPS_NS::LAMMPS* lmp);  // TDEM_LIG_MODULE_TIMESTEP (src/advice/liggghts)
-void register_clump(LAMMPS_NS::LAMMPS* lmp);     // TDEM_LIG_MODULE_CLUMP    (src/clumps/liggghts)
+// inserted into the instance's style maps by attach(); defined in src/fixes/<module>/liggghts/
+// (register_fixes: fix tdem/integrate, src/integrators/liggghts/, always on).
+void register_fixes(LAMMPS_NS::LAMMPS* lmp);
+void register_grate(LAMMPS_NS::LAMMPS* lmp);     // TDEM_LIG_MODULE_GRATE    (src/fixes/grate/liggghts)
+void register_mixing(LAMMPS_NS::LAMMPS* lmp);    // TDEM_LIG_MODULE_MIXING   (src/fixes/mixing/liggghts)
+void register_timestep(LAMMPS_NS::LAMMPS* lmp);  // TDEM_LIG_MODULE_TIMESTEP (src/fixes/timestep/liggghts)
+void register_clump(LAMMPS_NS::LAMMPS* lmp);     // TDEM_LIG_MODULE_CLUMP    (src/fixes/clumps/liggghts)
 
 }  // namespace liggghts
 }  // namespace tdem

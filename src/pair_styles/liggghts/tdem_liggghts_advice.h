@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: a read-only registry through which every tdem normal model publishes its
-// settings and its per-type-pair coefficients, so that fix tdem/timestep (src/advice/liggghts)
+// settings and its per-type-pair coefficients, so that fix tdem/timestep (src/fixes/timestep/liggghts)
 // advises the law exactly as the model evaluates it (issue 8).
 //
 // Key: the owner of the contact model, i.e. the LIGGGHTS::IContactHistorySetup* the model is

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-# fix tdem/clump (module clump, src/clumps/lammps): included by tests/host/lammps/CMakeLists.txt
+# fix tdem/clump (module clump, src/fixes/clumps/lammps): included by tests/host/lammps/CMakeLists.txt
 if(NOT TDEM_LAMMPS_CLUMP)
   return()
 endif()

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-# fix tdem/grate (module 'grate', src/grate/lammps): bar kinematics vs an independent model (VTK and
+# fix tdem/grate (module 'grate', src/fixes/grate/lammps): bar kinematics vs an independent model (VTK and
 # the group motion), carrying by moving bars (3D, reverse grate, 2D disks), impacts vs the closed
 # forms (face, joint of two rows, bar edge), -np 2 = -np 1 and restart with two-box contacts, bad input.
 if(NOT TDEM_LAMMPS_GRATE)

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-# fix tdem/clump for LIGGGHTS (module 'clump', src/clumps/liggghts; docs/clumps_liggghts.md): included by
+# fix tdem/clump for LIGGGHTS (module 'clump', src/fixes/clumps/liggghts; docs/clumps_liggghts.md): included by
 # tests/host/liggghts/CMakeLists.txt. One-sphere clumps = nve/sphere, torque-free asymmetric body,
 # flat-face impacts against the N-contact closed form, -np 2 = -np 1, restart, insertion, bad input;
 # the multiple-contact correction (corr*: count/overlap flat impacts, continuity, local_mass, -np 2 and restart;

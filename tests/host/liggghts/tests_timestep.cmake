@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-# module 'timestep': fix tdem/timestep (src/advice/liggghts), test_timestep_advice.py --part NAME
+# module 'timestep': fix tdem/timestep (src/fixes/timestep/liggghts), test_timestep_advice.py --part NAME
 if(TDEM_LIGGGHTS_TIMESTEP AND TARGET tdem-liggghts)
   foreach(_p acceptance:unstable_at_1_1_dt_c_stable_at_0_5 closed_forms:printed_advice_matches_closed_forms
              check_modes:check_warn_stop_off runtime:runtime_check_on_raised_velocity bad_input:bad_input

@@ -1,0 +1,824 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: fix tdem/clump (see fix_tdem_clump.h and docs/clumps_lammps.md).
+
+#include "fix_tdem_clump.h"
+
+#include "fixes/clumps/host_bodies.h"
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "force.h"
+#include "group.h"
+#include "lammps_compat.h"
+#include "memory.h"
+#include "modify.h"
+#include "neighbor.h"
+#include "region.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+#include <mpi.h>
+#include <string>
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace cl = tdem::clumps;
+using cl::Mat3;
+using cl::Vec3;
+
+namespace {
+constexpr double kRestartMagic = 20261129.0;
+constexpr int kBodyDoubles = 14;  // mol, x3, v3, q4, L3
+
+// Modify calls post_constructor() before restart(): whether the restart file read holds a global
+// record of this fix is looked up in Modify's list (protected members reached through pointers
+// to members of a derived class, the legal way).
+struct ModifyRestartPeek : public Modify {
+  static bool has_global(Modify *m, const std::string &id, const std::string &style)
+  {
+    char **Modify::*ids = &ModifyRestartPeek::id_restart_global;
+    char **Modify::*styles = &ModifyRestartPeek::style_restart_global;
+    for (int i = 0; i < m->nfix_restart_global; i++)
+      if (id == (m->*ids)[i] && style == (m->*styles)[i]) return true;
+    return false;
+  }
+};
+
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixTDEMClump::FixTDEMClump(LAMMPS *lmp, int narg, char **arg) :
+    Fix(lmp, narg, arg), scheme(cl::Rotation::splitting), nsph(0), bodies_molecule(0),
+    correction((int) cl::Correction::none), restarted(0),
+    formed(0), ninsert(0), insert_type(1), insert_seed(0), nmax_idx(0), bodyidx(nullptr), sphidx(nullptr),
+    dtv(0.0), dtf(0.0)
+{
+  where = std::string("fix ") + id + " tdem/clump";
+  insert_vel[0] = insert_vel[1] = insert_vel[2] = 0.0;
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    error->all(FLERR, where + " requires atom_style sphere (per-atom radius, rmass, omega, torque); the current "
+                              "atom style '" + std::string(atom->atom_style) + "' lacks them");
+  if (!atom->molecule_flag)
+    error->all(FLERR, where + " requires molecule IDs (the spheres of one body share a molecule ID): add "
+                              "'fix ID all property/atom mol ghost yes' before the box is filled");
+  if (domain->triclinic) error->all(FLERR, where + " supports orthogonal boxes only (the box is triclinic)");
+  if (domain->dimension != 3) error->all(FLERR, where + " needs a 3d simulation (dimension is 2)");
+  parse(narg, arg);
+
+  rigid_flag = 1;
+  time_integrate = 1;
+  restart_global = 1;
+  dynamic_group_allow = 0;
+  scalar_flag = 1;
+  extscalar = 1;
+  vector_flag = 1;
+  size_vector = 9;
+  extvector = 1;
+  array_flag = 1;
+  size_array_cols = 17;
+  size_array_rows = 0;
+  size_array_rows_variable = 1;
+  extarray = 0;
+  global_freq = 1;
+  thermo_energy = 0;
+}
+
+FixTDEMClump::~FixTDEMClump()
+{
+  memory->destroy(bodyidx);
+  memory->destroy(sphidx);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMClump::parse(int narg, char **arg)
+{
+  const std::string syntax =
+      "fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO] "
+      "[integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson] "
+      "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule] "
+      "[correction none|count|overlap|local_mass]";
+  auto need = [&](int iarg, int n, const std::string &key, const std::string &what) {
+    if (iarg + n >= narg) error->all(FLERR, where + ": keyword '" + key + "' needs " + what + "; syntax: " + syntax);
+  };
+  auto num = [&](const char *s, const std::string &key) {
+    char *end = nullptr;
+    const double v = std::strtod(s, &end);
+    if (end == s || *end != '\0' || !std::isfinite(v))
+      error->all(FLERR, where + ": keyword '" + key + "': value '" + std::string(s) + "' is not a number");
+    return v;
+  };
+  auto integer = [&](const char *s, const std::string &key, long long lo, long long hi) {
+    const double v = num(s, key);
+    if (v != std::floor(v) || v < (double) lo || v > (double) hi)
+      error->all(FLERR, where + ": keyword '" + key + "': value '" + std::string(s) + "' is not an integer in [" +
+                            std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return (long long) v;
+  };
+  std::string name, kind, path, shape, integ = "columns";
+  double r = 0.0, d = 0.0, rho = -1.0;
+  int n = 2, resolution = 64;
+  bool have_rotation = false;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "template") {
+      need(iarg, 1, key, "a name");
+      name = arg[iarg + 1];
+      iarg += 2;
+    } else if (key == "file") {
+      need(iarg, 1, key, "a path");
+      kind = "file";
+      path = arg[iarg + 1];
+      iarg += 2;
+    } else if (key == "shape") {
+      need(iarg, 3, key, "SHAPE r d [n]");
+      kind = "shape";
+      shape = arg[iarg + 1];
+      if (shape != "single" && shape != "dimer" && shape != "rod" && shape != "tetra" && shape != "square4" &&
+          shape != "cube8")
+        error->all(FLERR, where + ": shape '" + shape + "' is unknown; allowed: single, dimer, rod, tetra, square4, cube8");
+      r = num(arg[iarg + 2], "shape r");
+      d = num(arg[iarg + 3], "shape d");
+      if (!(r > 0.0)) error->all(FLERR, where + ": shape radius r = " + std::string(arg[iarg + 2]) + " is outside (0, inf)");
+      if (!(d >= 0.0)) error->all(FLERR, where + ": shape distance d = " + std::string(arg[iarg + 3]) + " is outside [0, inf)");
+      iarg += 4;
+      if (shape == "rod") {
+        need(iarg - 1, 1, "shape rod", "the number of spheres n");
+        n = (int) integer(arg[iarg], "shape rod n", 1, 1000);
+        iarg += 1;
+      }
+    } else if (key == "density") {
+      need(iarg, 1, key, "a value");
+      rho = num(arg[iarg + 1], key);
+      if (!(rho > 0.0)) error->all(FLERR, where + ": density " + std::string(arg[iarg + 1]) + " is outside (0, inf)");
+      iarg += 2;
+    } else if (key == "integration") {
+      need(iarg, 1, key, "a value (columns, voxel, monte_carlo)");
+      integ = arg[iarg + 1];
+      if (integ != "columns" && integ != "voxel" && integ != "monte_carlo")
+        error->all(FLERR, where + ": integration '" + integ + "' is unknown; allowed: columns, voxel, monte_carlo");
+      iarg += 2;
+    } else if (key == "resolution") {
+      need(iarg, 1, key, "a value");
+      resolution = (int) integer(arg[iarg + 1], key, 4, 4096);
+      iarg += 2;
+    } else if (key == "rotation") {
+      need(iarg, 1, key, "a value (splitting, explicit, richardson)");
+      const std::string v = arg[iarg + 1];
+      if (v == "splitting") scheme = cl::Rotation::splitting;
+      else if (v == "explicit") scheme = cl::Rotation::explicit_rodrigues;
+      else if (v == "richardson") scheme = cl::Rotation::richardson;
+      else error->all(FLERR, where + ": rotation '" + v + "' is unknown; allowed: splitting, explicit, richardson");
+      have_rotation = true;
+      iarg += 2;
+    } else if (key == "insert") {
+      need(iarg, 5, key, "N region REGID seed S");
+      ninsert = (int) integer(arg[iarg + 1], "insert N", 1, 100000000);
+      if (std::string(arg[iarg + 2]) != "region")
+        error->all(FLERR, where + ": insert: expected 'region' after N, got '" + std::string(arg[iarg + 2]) + "'");
+      insert_region = arg[iarg + 3];
+      if (std::string(arg[iarg + 4]) != "seed")
+        error->all(FLERR, where + ": insert: expected 'seed' after the region, got '" + std::string(arg[iarg + 4]) + "'");
+      insert_seed = integer(arg[iarg + 5], "insert seed", 1, 2147483647);
+      iarg += 6;
+      while (iarg < narg) {
+        const std::string k2 = arg[iarg];
+        if (k2 == "type") {
+          need(iarg, 1, "insert type", "a value");
+          insert_type = (int) integer(arg[iarg + 1], "insert type", 1, atom->ntypes);
+          iarg += 2;
+        } else if (k2 == "vel") {
+          need(iarg, 3, "insert vel", "vx vy vz");
+          for (int k = 0; k < 3; k++) insert_vel[k] = num(arg[iarg + 1 + k], "insert vel");
+          iarg += 4;
+        } else {
+          break;
+        }
+      }
+    } else if (key == "bodies") {
+      need(iarg, 1, key, "a value (molecule)");
+      if (std::string(arg[iarg + 1]) != "molecule")
+        error->all(FLERR, where + ": bodies '" + std::string(arg[iarg + 1]) + "' is unknown; allowed: molecule");
+      bodies_molecule = 1;
+      iarg += 2;
+    } else if (key == "correction") {
+      need(iarg, 1, key, "a value (none, count, overlap, local_mass)");
+      const std::string v = arg[iarg + 1];
+      if (v != "none" && v != "count" && v != "overlap" && v != "local_mass")
+        error->all(FLERR, where + ": correction '" + v + "' is unknown; allowed: none, count, overlap, local_mass");
+      correction = (int) cl::correction_from_string(v);
+      iarg += 2;
+    } else {
+      error->all(FLERR, where + ": unknown keyword '" + key +
+                            "'; allowed: template, file, shape, density, integration, resolution, rotation, "
+                            "insert, bodies, correction; syntax: " + syntax);
+    }
+  }
+  (void) have_rotation;
+  if (name.empty()) error->all(FLERR, where + ": missing keyword 'template NAME'; syntax: " + syntax);
+  if (kind.empty()) error->all(FLERR, where + ": missing 'file PATH' or 'shape SHAPE r d [n]'; syntax: " + syntax);
+  if (kind == "shape" && rho < 0.0)
+    error->all(FLERR, where + ": missing keyword 'density RHO' (needed for the mass of shape " + shape + ")");
+  if (kind == "shape" && shape != "single" && !(d > 0.0))
+    error->all(FLERR, where + ": shape distance d = 0 is outside (0, inf) for shape " + shape);
+  if (ninsert == 0) bodies_molecule = 1;
+  build_template(kind, path, shape, r, d, n, rho, resolution, integ);
+  tmpl.name = name;
+}
+
+void FixTDEMClump::build_template(const std::string &kind, const std::string &path, const std::string &shape,
+                                  double r, double d, int n, double rho, int resolution, const std::string &integ)
+{
+  const cl::Integration method = integ == "voxel"       ? cl::Integration::voxel
+                                 : integ == "monte_carlo" ? cl::Integration::monte_carlo
+                                                          : cl::Integration::columns;
+  try {
+    if (kind == "file") {
+      tmpl = cl::read_template_file(path, rho > 0.0 ? rho : 0.0);
+    } else {
+      tmpl = cl::make_template(shape, cl::builtin_shape(shape, r, d, n), rho, resolution, method);
+    }
+    // the union of disjoint spheres is the sum of the spheres: exact mass properties
+    cl::exact_if_disjoint(tmpl);
+  } catch (const std::exception &e) {
+    error->all(FLERR, where + ": template: " + std::string(e.what()));
+  }
+  bprop = cl::Body::from(tmpl);
+  nsph = (int) tmpl.body.size();
+  sphere_mass = cl::sphere_masses(tmpl);  // the body mass shared by r^3; exactly M for one sphere
+  if (comm->me == 0)
+    utils::logmesg(lmp, fmt::format("{}: template {} ({} spheres): mass {:.10g}, principal inertia {:.10g} {:.10g} "
+                                    "{:.10g}, bounding radius {:.6g}, rotation {}\n",
+                                    where, tmpl.name, nsph, tmpl.mp.mass, tmpl.mp.principal[0], tmpl.mp.principal[1],
+                                    tmpl.mp.principal[2], tmpl.bounding_radius, cl::to_string(scheme)));
+}
+
+int FixTDEMClump::setmask()
+{
+  int mask = 0;
+  mask |= INITIAL_INTEGRATE;
+  mask |= FINAL_INTEGRATE;
+  mask |= PRE_NEIGHBOR;
+  return mask;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMClump::add_body(tagint mol, const cl::State &s, const tagint *tags)
+{
+  const int b = (int) st.size();
+  st.push_back(s);
+  molid.push_back(mol);
+  masstotal.push_back(bprop.mass);
+  fsum.resize(6 * st.size(), 0.0);
+  rot.push_back(cl::rotation_matrix(s.q));
+  omg.push_back(cl::angular_velocity(s, bprop));
+  for (int k = 0; k < nsph; k++) {
+    btags.push_back(tags[k]);
+    slot[tags[k]] = b * nsph + k;
+  }
+  size_array_rows = (int) st.size();
+}
+
+void FixTDEMClump::unwrapped(int i, double *xu) const
+{
+  domain->unmap(atom->x[i], atom->image[i], xu);
+}
+
+// N clumps at random positions and orientations in the region, without overlap with each other
+// and with existing atoms. Every rank draws the same sequence; each creates the spheres it owns.
+void FixTDEMClump::post_constructor()
+{
+  if (ModifyRestartPeek::has_global(modify, id, "tdem/clump")) restarted = 1;
+  if (ninsert > 0 && !restarted) insert_clumps();
+  else if (ninsert > 0 && comm->me == 0)
+    utils::logmesg(lmp, where + ": bodies read from the restart file, 'insert' is skipped\n");
+}
+
+void FixTDEMClump::insert_clumps()
+{
+  Region *region = tdem_lammps::compat::region_by_id(domain, insert_region);
+  if (!region) error->all(FLERR, where + ": insert region '" + insert_region + "' does not exist");
+  if (!region->bboxflag)
+    error->all(FLERR, where + ": insert region '" + insert_region + "' has no bounding box (use a bounded region)");
+  region->prematch();
+  // existing atoms (all ranks see all): positions and radii
+  const int nlocal = atom->nlocal;
+  std::vector<double> mine(4 * nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    for (int k = 0; k < 3; k++) mine[4 * i + k] = atom->x[i][k];
+    mine[4 * i + 3] = atom->radius[i];
+  }
+  int nme = 4 * nlocal;
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int ntot = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = ntot;
+    ntot += counts[p];
+  }
+  std::vector<double> old(ntot);
+  MPI_Allgatherv(mine.data(), nme, MPI_DOUBLE, old.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  const int nold = ntot / 4;
+
+  tagint maxtag = 0, maxmol = 0, all;
+  for (int i = 0; i < nlocal; i++) {
+    maxtag = std::max(maxtag, atom->tag[i]);
+    maxmol = std::max(maxmol, atom->molecule[i]);
+  }
+  MPI_Allreduce(&maxtag, &all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  maxtag = all;
+  MPI_Allreduce(&maxmol, &all, 1, MPI_LMP_TAGINT, MPI_MAX, world);
+  maxmol = all;
+  for (const tagint m : molid) maxmol = std::max(maxmol, m);
+
+  // the placement of the core (src/fixes/clumps/host_bodies.h), as in LIGGGHTS: the same seed gives the
+  // same clumps in both engines
+  cl::PlacementInput in;
+  in.n = ninsert;
+  in.seed = (std::uint64_t) insert_seed;
+  in.lo = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
+  in.hi = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
+  in.inside = [&](const Vec3 &p, double r) {
+    if (!region->match(p[0], p[1], p[2])) return false;
+    for (int k = 0; k < 3; k++)
+      for (int sgn = -1; sgn <= 1; sgn += 2) {
+        Vec3 q = p;
+        q[k] += sgn * r;
+        if (!region->match(q[0], q[1], q[2])) return false;
+      }
+    return true;
+  };
+  in.delta = [&](const Vec3 &a, const Vec3 &b) {
+    double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    tdem_lammps::compat::minimum_image(domain, dx, dy, dz);
+    return Vec3{dx, dy, dz};
+  };
+  for (int i = 0; i < nold; i++) in.existing.push_back({Vec3{old[4 * i], old[4 * i + 1], old[4 * i + 2]}, old[4 * i + 3]});
+  in.period = {domain->xperiodic ? domain->xprd : 0.0, domain->yperiodic ? domain->yprd : 0.0,
+               domain->zperiodic ? domain->zprd : 0.0};
+  const cl::PlacementResult res = cl::place_clumps(tmpl, in);
+  if (!res.complete)
+    error->all(FLERR, fmt::format("{}: insert: placed only {} of {} clumps in region {}: {} random attempts "
+                                  "in a row found no free place (region too small or too full); use a larger "
+                                  "region or a smaller N",
+                                  where, res.bodies.size(), ninsert, insert_region, in.max_failures));
+  std::vector<cl::State> newbodies = res.bodies;
+  for (auto &s : newbodies) {
+    s.v = {insert_vel[0], insert_vel[1], insert_vel[2]};
+    s.L = {0, 0, 0};
+  }
+  const std::vector<Vec3> &placed = res.spheres;  // sphere centres of the new clumps (unwrapped)
+
+  // create the spheres this rank owns
+  const int nprev = atom->nlocal;
+  bigint mycreated = 0;
+  double *sublo = domain->sublo, *subhi = domain->subhi;
+  for (int b = 0; b < ninsert; b++) {
+    std::vector<tagint> tags(nsph);
+    const tagint mol = maxmol + 1 + b;
+    for (int k = 0; k < nsph; k++) tags[k] = maxtag + 1 + (tagint) b * nsph + k;
+    add_body(mol, newbodies[b], tags.data());
+    const cl::State &s = newbodies[b];
+    const Vec3 w = cl::angular_velocity(s, bprop);
+    for (int k = 0; k < nsph; k++) {
+      const Vec3 xu = placed[(std::size_t) b * nsph + k];
+      double xw[3] = {xu[0], xu[1], xu[2]};
+      imageint img = ((imageint) IMGMAX << IMG2BITS) | ((imageint) IMGMAX << IMGBITS) | IMGMAX;
+      domain->remap(xw, img);
+      bool own = true;
+      for (int dd = 0; dd < 3; dd++) {
+        const bool top = subhi[dd] == domain->boxhi[dd];  // the upper end of a non-periodic box belongs here
+        if (!(xw[dd] >= sublo[dd] && (xw[dd] < subhi[dd] || (top && !domain->periodicity[dd] && xw[dd] <= subhi[dd]))))
+          own = false;
+      }
+      if (!own) continue;
+      atom->avec->create_atom(insert_type, xw);
+      const int n = atom->nlocal - 1;
+      atom->tag[n] = tags[k];
+      atom->molecule[n] = mol;
+      atom->image[n] = img;
+      atom->mask[n] |= groupbit;
+      atom->radius[n] = tmpl.body[k].r;
+      atom->rmass[n] = sphere_mass[k];
+      const Vec3 vi = cl::add(s.v, cl::cross(w, cl::sub(xu, s.x)));
+      for (int dd = 0; dd < 3; dd++) {
+        atom->v[n][dd] = vi[dd];
+        atom->omega[n][dd] = w[dd];
+      }
+      mycreated++;
+    }
+  }
+  bigint created = 0;
+  MPI_Allreduce(&mycreated, &created, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (created != (bigint) ninsert * nsph)
+    error->all(FLERR, fmt::format("{}: insert: {} spheres created instead of {} (a sphere outside every "
+                                  "subdomain: is the region inside the box?)",
+                                  where, created, (bigint) ninsert * nsph));
+  atom->natoms += created;
+  atom->data_fix_compute_variable(nprev, atom->nlocal);
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp, fmt::format("{}: inserted {} clumps ({} spheres) in region {} after {} attempts; "
+                                    "molecule IDs {}-{}, atom IDs {}-{}\n",
+                                    where, ninsert, created, insert_region, res.attempts, maxmol + 1, maxmol + ninsert,
+                                    maxtag + 1, maxtag + created));
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMClump::init()
+{
+  dtv = update->dt;
+  dtf = 0.5 * update->dt * force->ftm2v;
+  // the spheres of one body must not interact with each other
+  bool excluded = false;
+  for (int k = 0; k < neighbor->nex_mol; k++)
+    if (neighbor->ex_mol_intra[k] && (neighbor->ex_mol_group[k] == igroup || neighbor->ex_mol_group[k] == 0))
+      excluded = true;
+  if (!excluded && nsph > 1 && comm->me == 0)
+    error->warning(FLERR, where + ": spheres of one clump interact with each other; add 'neigh_modify exclude "
+                              "molecule/intra " + std::string(group->names[igroup]) + "'");
+  // another time integrator on the same atoms would move them twice
+  for (int i = 0; i < modify->nfix; i++) {
+    Fix *f = modify->fix[i];
+    if (f == this || !f->time_integrate) continue;
+    int mine = 0, any = 0;
+    for (int j = 0; j < atom->nlocal; j++)
+      if ((atom->mask[j] & f->groupbit) &&
+          (slot.count(atom->tag[j]) ||
+           (bodies_molecule && !formed && (atom->mask[j] & groupbit) && atom->molecule[j] > 0)))
+        mine = 1;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any)
+      error->all(FLERR, where + ": fix " + std::string(f->id) + " (" + std::string(f->style) +
+                            ") also integrates clump spheres; exclude them from its group");
+  }
+}
+
+// Bodies from the group's molecules that are not bodies yet (tag order = template order).
+void FixTDEMClump::form_bodies()
+{
+  const int nlocal = atom->nlocal;
+  constexpr int W = 12;  // tag, mol, xu3, v3, omega3, radius
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || atom->molecule[i] <= 0) continue;
+    if (slot.count(atom->tag[i])) continue;
+    double xu[3];
+    unwrapped(i, xu);
+    const double row[W] = {(double) atom->tag[i], (double) atom->molecule[i], xu[0], xu[1], xu[2], atom->v[i][0],
+                           atom->v[i][1], atom->v[i][2], atom->omega[i][0], atom->omega[i][1], atom->omega[i][2],
+                           atom->radius[i]};
+    mine.insert(mine.end(), row, row + W);
+  }
+  int nme = (int) mine.size();
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int ntot = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = ntot;
+    ntot += counts[p];
+  }
+  std::vector<double> rows(ntot);
+  MPI_Allgatherv(mine.data(), nme, MPI_DOUBLE, rows.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  std::map<tagint, std::vector<const double *>> mols;
+  for (int k = 0; k < ntot / W; k++) mols[(tagint) rows[W * k + 1]].push_back(&rows[W * k]);
+  for (const tagint m : molid)
+    if (mols.count(m))
+      error->all(FLERR, fmt::format("{}: molecule {} is already a body; its spheres must not change", where, m));
+  int nnew = 0;
+  for (auto &kv : mols) {
+    auto &v = kv.second;
+    std::sort(v.begin(), v.end(), [](const double *a, const double *b) { return a[0] < b[0]; });
+    if ((int) v.size() != nsph)
+      error->all(FLERR, fmt::format("{}: molecule {} has {} spheres in group {}, template {} has {}", where, kv.first,
+                                    v.size(), group->names[igroup], tmpl.name, nsph));
+    std::vector<tagint> tags(nsph);
+    for (int k = 0; k < nsph; k++) {
+      tags[k] = (tagint) v[k][0];
+      const double r = tmpl.body[k].r;
+      if (std::fabs(v[k][11] - r) > 1e-6 * r)
+        error->all(FLERR, fmt::format("{}: atom {} (molecule {}) has radius {} but sphere {} of template {} has "
+                                      "radius {}",
+                                      where, tags[k], kv.first, v[k][11], k + 1, tmpl.name, r));
+    }
+    // orientation (Horn's quaternion) and velocities (least squares) of the core, as in LIGGGHTS
+    std::vector<Vec3> p(nsph), vel(nsph), om(nsph);
+    for (int k = 0; k < nsph; k++) {
+      p[k] = {v[k][2], v[k][3], v[k][4]};
+      vel[k] = {v[k][5], v[k][6], v[k][7]};
+      om[k] = {v[k][8], v[k][9], v[k][10]};
+    }
+    cl::BodyFit fit;
+    try {
+      fit = cl::fit_body(tmpl, bprop, p, vel, om);
+    } catch (const std::exception &ex) {
+      error->all(FLERR, where + ": internal error: " + ex.what());
+    }
+    if (fit.residual > 1e-6 * tmpl.bounding_radius)
+      error->all(FLERR, fmt::format("{}: the spheres of molecule {} (atom IDs {}..., in ID order) are not a rigid "
+                                    "copy of template {}: largest distance {} from the best fit (allowed {})",
+                                    where, kv.first, tags[0], tmpl.name, fit.residual, 1e-6 * tmpl.bounding_radius));
+    const cl::State &s = fit.state;
+    add_body(kv.first, s, tags.data());
+    nnew++;
+  }
+  if (comm->me == 0)
+    utils::logmesg(lmp, fmt::format("{}: {} bodies formed from the molecules of group {} ({} bodies in all)\n", where,
+                                    nnew, group->names[igroup], st.size()));
+}
+
+// Per-atom body and sphere index of owned and ghost atoms; sphere radius and mass from the template.
+void FixTDEMClump::map_atoms()
+{
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_idx) {
+    nmax_idx = atom->nmax;
+    memory->destroy(bodyidx);
+    memory->destroy(sphidx);
+    memory->create(bodyidx, nmax_idx, "tdem/clump:bodyidx");
+    memory->create(sphidx, nmax_idx, "tdem/clump:sphidx");
+  }
+  const int nmine = tdem::clumps::map_clump_atoms(nall, atom->nlocal, atom->tag, slot, nsph, tmpl, sphere_mass,
+                                                  bodyidx, sphidx, atom->radius, atom->rmass);
+  bigint mine = nmine, all = 0;
+  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (all != (bigint) st.size() * nsph)
+    error->all(FLERR, fmt::format("{}: {} clump spheres found, {} bodies need {} (clump spheres lost or deleted)",
+                                  where, all, st.size(), (bigint) st.size() * nsph));
+}
+
+// omega = Lambda I^-1 Lambda^T L with the cached rotation matrix
+static inline Vec3 omega_of(const Mat3 &R, const Vec3 &L, const cl::Body &b)
+{
+  const Vec3 pi = cl::mul_t(R, L);
+  return cl::mul(R, Vec3{pi[0] / b.inertia[0], pi[1] / b.inertia[1], pi[2] / b.inertia[2]});
+}
+
+void FixTDEMClump::refresh_kinematics()
+{
+  for (std::size_t b = 0; b < st.size(); b++) {
+    rot[b] = cl::rotation_matrix(st[b].q);
+    omg[b] = omega_of(rot[b], st[b].L, bprop);
+  }
+  if (correction != (int) cl::Correction::local_mass) return;
+  // com and inverse inertia (space frame, R diag(1/I) R^T) for the local_mass correction
+  bcom.resize(3 * st.size());
+  binv.resize(9 * st.size());
+  for (std::size_t b = 0; b < st.size(); b++) {
+    const Mat3 &R = rot[b];
+    for (int i = 0; i < 3; i++) {
+      bcom[3 * b + i] = st[b].x[i];
+      for (int j = 0; j < 3; j++) {
+        double s = 0.0;
+        for (int k = 0; k < 3; k++) s += R[i][k] * R[j][k] / bprop.inertia[k];
+        binv[9 * b + 3 * i + j] = s;
+      }
+    }
+  }
+}
+
+void FixTDEMClump::setup_pre_neighbor()
+{
+  if (bodies_molecule && !formed) {
+    form_bodies();
+    formed = 1;
+    map_atoms();
+    refresh_kinematics();
+    set_spheres(false);
+  } else {
+    map_atoms();
+    // the pair and wall styles of the setup force evaluation need com and inertia (local_mass)
+    if (correction == (int) cl::Correction::local_mass) refresh_kinematics();
+  }
+}
+
+void FixTDEMClump::pre_neighbor()
+{
+  map_atoms();
+}
+
+void FixTDEMClump::setup(int /*vflag*/)
+{
+  dtv = update->dt;
+  dtf = 0.5 * update->dt * force->ftm2v;
+  refresh_kinematics();
+  sum_forces();
+}
+
+void FixTDEMClump::reset_dt()
+{
+  dtv = update->dt;
+  dtf = 0.5 * update->dt * force->ftm2v;
+}
+
+// fsum <- force and torque about the com of every body. Each owned sphere writes its force and
+// torque (about the com) into its own slot; the slots are combined over the ranks (one non-zero
+// contribution per slot, so the reduction is exact) and summed per body in template order: the
+// result does not depend on the order of the atoms or on the number of ranks.
+void FixTDEMClump::sum_forces()
+{
+  const std::size_t nslot = st.size() * nsph;
+  if (sphere_f.size() != 6 * nslot) sphere_f.assign(6 * nslot, 0.0);
+  else std::fill(sphere_f.begin(), sphere_f.end(), 0.0);
+  const int nlocal = atom->nlocal;
+  double **f = atom->f, **t = atom->torque;
+  for (int i = 0; i < nlocal; i++) {
+    const int b = bodyidx[i];
+    if (b < 0) continue;
+    const Vec3 r = cl::mul(rot[b], tmpl.body[sphidx[i]].x);
+    double *fs = &sphere_f[6 * ((std::size_t) b * nsph + sphidx[i])];
+    fs[0] = f[i][0];
+    fs[1] = f[i][1];
+    fs[2] = f[i][2];
+    fs[3] = r[1] * f[i][2] - r[2] * f[i][1] + t[i][0];
+    fs[4] = r[2] * f[i][0] - r[0] * f[i][2] + t[i][1];
+    fs[5] = r[0] * f[i][1] - r[1] * f[i][0] + t[i][2];
+  }
+  if (comm->nprocs > 1)
+    MPI_Allreduce(MPI_IN_PLACE, sphere_f.data(), (int) sphere_f.size(), MPI_DOUBLE, MPI_SUM, world);
+  for (std::size_t b = 0; b < st.size(); b++) {
+    double *fb = &fsum[6 * b];
+    const double *fs = &sphere_f[6 * b * nsph];
+    for (int c = 0; c < 6; c++) fb[c] = fs[c];
+    for (int k = 1; k < nsph; k++)
+      for (int c = 0; c < 6; c++) fb[c] += fs[6 * k + c];
+  }
+}
+
+// owned spheres from their bodies: x (if positions), v, omega
+void FixTDEMClump::set_spheres(bool positions)
+{
+  const int nlocal = atom->nlocal;
+  const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
+  for (int i = 0; i < nlocal; i++) {
+    const int b = bodyidx[i];
+    if (b < 0) continue;
+    const Vec3 r = cl::mul(rot[b], tmpl.body[sphidx[i]].x);
+    if (positions) {
+      const imageint img = atom->image[i];
+      const int box[3] = {(int) (img & IMGMASK) - IMGMAX, (int) (img >> IMGBITS & IMGMASK) - IMGMAX,
+                          (int) (img >> IMG2BITS) - IMGMAX};
+      for (int k = 0; k < 3; k++) atom->x[i][k] = st[b].x[k] + r[k] - box[k] * prd[k];
+    }
+    const Vec3 &w = omg[b];
+    atom->v[i][0] = st[b].v[0] + w[1] * r[2] - w[2] * r[1];
+    atom->v[i][1] = st[b].v[1] + w[2] * r[0] - w[0] * r[2];
+    atom->v[i][2] = st[b].v[2] + w[0] * r[1] - w[1] * r[0];
+    atom->omega[i][0] = w[0];
+    atom->omega[i][1] = w[1];
+    atom->omega[i][2] = w[2];
+  }
+}
+
+void FixTDEMClump::initial_integrate(int /*vflag*/)
+{
+  const double h = dtv, c = 2.0 * dtf / dtv;  // c = ftm2v
+  for (std::size_t b = 0; b < st.size(); b++) {
+    const double *fb = &fsum[6 * b];
+    cl::initial_integrate(st[b], bprop, Vec3{c * fb[0], c * fb[1], c * fb[2]}, Vec3{c * fb[3], c * fb[4], c * fb[5]},
+                          h, scheme);
+  }
+  refresh_kinematics();
+  set_spheres(true);
+}
+
+void FixTDEMClump::final_integrate()
+{
+  sum_forces();
+  const double h = dtv, c = 2.0 * dtf / dtv;
+  for (std::size_t b = 0; b < st.size(); b++) {
+    const double *fb = &fsum[6 * b];
+    cl::final_integrate(st[b], bprop, Vec3{c * fb[0], c * fb[1], c * fb[2]}, Vec3{c * fb[3], c * fb[4], c * fb[5]}, h);
+    omg[b] = omega_of(rot[b], st[b].L, bprop);
+  }
+  set_spheres(false);
+}
+
+/* ---------------------------------------------------------------------- */
+
+double FixTDEMClump::compute_scalar()
+{
+  double e = 0.0;
+  for (const auto &s : st) e += cl::kinetic_energy(s, bprop);
+  return e * force->mvv2e;
+}
+
+// 1: bodies, 2-4: total momentum, 5-7: sum of the bodies' angular momenta about their com,
+// 8: translational, 9: rotational kinetic energy
+double FixTDEMClump::compute_vector(int n)
+{
+  if (n == 0) return (double) st.size();
+  double out = 0.0;
+  for (const auto &s : st) {
+    if (n >= 1 && n <= 3) out += bprop.mass * s.v[n - 1];
+    else if (n >= 4 && n <= 6) out += s.L[n - 4];
+    else if (n == 7) out += 0.5 * bprop.mass * cl::dot(s.v, s.v) * force->mvv2e;
+    else if (n == 8) out += cl::rotational_energy(s, bprop) * force->mvv2e;
+  }
+  return out;
+}
+
+// row per body: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
+double FixTDEMClump::compute_array(int i, int j)
+{
+  if (i < 0 || i >= (int) st.size()) return 0.0;
+  const cl::State &s = st[i];
+  if (j == 0) return (double) molid[i];
+  if (j <= 3) return s.x[j - 1];
+  if (j <= 6) return s.v[j - 4];
+  if (j == 7) return s.q.w;
+  if (j == 8) return s.q.x;
+  if (j == 9) return s.q.y;
+  if (j == 10) return s.q.z;
+  if (j <= 13) return s.L[j - 11];
+  if (j <= 16) return cl::angular_velocity(s, bprop)[j - 14];
+  return 0.0;
+}
+
+// "body" / "tdem_clump_body": int per atom (owned and ghost), body index or -1;
+// "masstotal": double per body (as fix rigid, for the granular pair and wall styles);
+// "tdem_clump_correction": int (dim 0), the multiple-contact correction (tdem::clumps::Correction);
+// "tdem_clump_com", "tdem_clump_inv_inertia": double, 3 / 9 per body (local_mass only)
+void *FixTDEMClump::extract(const char *name, int &dim)
+{
+  dim = 1;
+  if (std::strcmp(name, "body") == 0 || std::strcmp(name, "tdem_clump_body") == 0) return (void *) bodyidx;
+  if (std::strcmp(name, "masstotal") == 0) return (void *) masstotal.data();
+  if (std::strcmp(name, "tdem_clump_sphere") == 0) return (void *) sphidx;
+  if (std::strcmp(name, "tdem_clump_com") == 0) return (void *) bcom.data();
+  if (std::strcmp(name, "tdem_clump_inv_inertia") == 0) return (void *) binv.data();
+  dim = 0;
+  if (std::strcmp(name, "tdem_clump_correction") == 0) return (void *) &correction;
+  return nullptr;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void FixTDEMClump::write_restart(FILE *fp)
+{
+  if (comm->me != 0) return;
+  std::vector<double> buf = {kRestartMagic, (double) st.size(), (double) nsph, (double) formed};
+  for (std::size_t b = 0; b < st.size(); b++) {
+    const cl::State &s = st[b];
+    const double row[kBodyDoubles] = {(double) molid[b], s.x[0], s.x[1], s.x[2], s.v[0], s.v[1], s.v[2],
+                                      s.q.w, s.q.x, s.q.y, s.q.z, s.L[0], s.L[1], s.L[2]};
+    buf.insert(buf.end(), row, row + kBodyDoubles);
+    for (int k = 0; k < nsph; k++) buf.push_back((double) btags[b * nsph + k]);
+  }
+  const int size = (int) (buf.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(buf.data(), sizeof(double), buf.size(), fp);
+}
+
+void FixTDEMClump::restart(char *raw)
+{
+  const double *buf = (const double *) raw;
+  if (buf[0] != kRestartMagic) error->all(FLERR, where + ": the restart record is not a tdem/clump record");
+  const int nb = (int) buf[1], ns = (int) buf[2];
+  if (ns != nsph)
+    error->all(FLERR, fmt::format("{}: the restart file has clumps of {} spheres, template {} has {}", where, ns,
+                                  tmpl.name, nsph));
+  formed = (int) buf[3];
+  st.clear();
+  molid.clear();
+  btags.clear();
+  masstotal.clear();
+  fsum.clear();
+  rot.clear();
+  omg.clear();
+  slot.clear();
+  const double *p = buf + 4;
+  for (int b = 0; b < nb; b++) {
+    cl::State s;
+    s.x = {p[1], p[2], p[3]};
+    s.v = {p[4], p[5], p[6]};
+    s.q = {p[7], p[8], p[9], p[10]};
+    s.L = {p[11], p[12], p[13]};
+    std::vector<tagint> tags(nsph);
+    for (int k = 0; k < nsph; k++) tags[k] = (tagint) p[kBodyDoubles + k];
+    add_body((tagint) p[0], s, tags.data());
+    p += kBodyDoubles + nsph;
+  }
+  restarted = 1;
+}
+
+double FixTDEMClump::memory_usage()
+{
+  return (double) nmax_idx * 2 * sizeof(int) +
+         (double) st.size() * (sizeof(cl::State) + sizeof(Mat3) + sizeof(Vec3) + 8 * sizeof(double)) +
+         (double) btags.size() * (sizeof(tagint) + 32);
+}

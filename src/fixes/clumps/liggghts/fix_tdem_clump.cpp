@@ -1,0 +1,987 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LIGGGHTS 3.8: fix tdem/clump (see fix_tdem_clump.h and docs/clumps_liggghts.md).
+#include "fix_tdem_clump.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <string>
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_wall_gran.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair_gran.h"
+#include "primitive_wall.h"
+#include "region.h"
+#include "update.h"
+
+#include "fixes/clumps/host_bodies.h"
+#include "tdem_liggghts_ids.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace cl = tdem::clumps;
+using cl::Mat3;
+using cl::Vec3;
+
+namespace {
+constexpr double kRestartMagic = 20261130.0;
+constexpr int kBodyDoubles = 20;  // mol, x3, v3, q4, L3, force3, torque3
+// side ids of the contact tally: body index >= 0, free sphere -(tag + 1), wall kWallSide + fix index
+constexpr std::int64_t kWallSide = std::int64_t(1) << 40;
+
+std::string num(double x) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.10g", x);
+  return buf;
+}
+
+// Neighbor's molecule exclusion list is protected in LIGGGHTS 3.8: read through pointers to members
+// taken in a derived class (the legal way to reach a protected member of another object).
+struct NeighborExclusionPeek : public Neighbor {
+  // groups of the `neigh_modify exclude molecule` entries (ex_mol_bit is set only in Neighbor::init,
+  // after the fixes' init)
+  static std::vector<int> molecule_groups(Neighbor* n) {
+    int Neighbor::*count = &NeighborExclusionPeek::nex_mol;
+    int* Neighbor::*groups = &NeighborExclusionPeek::ex_mol_group;
+    std::vector<int> out;
+    for (int k = 0; k < n->*count; k++) out.push_back((n->*groups)[k]);
+    return out;
+  }
+};
+
+const char* kSyntax =
+    "fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO] "
+    "[integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson] "
+    "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule] "
+    "[correction none|count|overlap|local_mass]";
+}  // namespace
+
+/* ---------------------------------------------------------------------- */
+
+FixTDEMClump::FixTDEMClump(LAMMPS* lmp, int narg, char** arg)
+    : Fix(lmp, narg, arg),
+      scheme_(cl::Rotation::splitting),
+      nsph_(0),
+      bodies_molecule_(false),
+      restarted_(false),
+      formed_(false),
+      have_force_(false),
+      need_set_(false),
+      ninsert_(0),
+      insert_type_(1),
+      insert_seed_(0),
+      nmax_idx_(0),
+      bodyidx_(nullptr),
+      sphidx_(nullptr),
+      correction_(cl::Correction::none),
+      pair_gran_(nullptr) {
+  where_ = std::string("fix ") + id + " tdem/clump";
+  insert_vel_[0] = insert_vel_[1] = insert_vel_[2] = 0.0;
+  if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
+    fail(where_ + " requires atom_style sphere/granular attributes (radius, rmass, omega, torque); atom_style '" +
+         std::string(atom->atom_style ? atom->atom_style : "?") + "' lacks them");
+  if (!atom->molecule_flag)
+    fail(where_ + " requires per-atom molecule IDs (the spheres of one body share a molecule ID): use "
+                  "'atom_style hybrid sphere molecular' (atom_style '" +
+         std::string(atom->atom_style ? atom->atom_style : "?") + "' has none)");
+  if (domain->triclinic) fail(where_ + " supports orthogonal boxes only (the box is triclinic)");
+  if (domain->dimension != 3) fail(where_ + " needs a 3d simulation (dimension is 2)");
+  parse(narg, arg);
+
+  rigid_flag = 0;  // LIGGGHTS casts fixes with rigid_flag to FixRigid in places; the body mass is not passed
+  time_integrate = 1;
+  restart_global = 1;
+  scalar_flag = 1;
+  extscalar = 1;
+  vector_flag = 1;
+  size_vector = 9;
+  extvector = 1;
+  array_flag = 1;
+  size_array_cols = 17;
+  size_array_rows = 0;
+  extarray = 0;
+  global_freq = 1;
+}
+
+FixTDEMClump::~FixTDEMClump() {
+  if (tdem::liggghts::clump_link::active == this) tdem::liggghts::clump_link::active = nullptr;
+  memory->destroy(bodyidx_);
+  memory->destroy(sphidx_);
+}
+
+void FixTDEMClump::fail(const std::string& msg) {
+  error->all(FLERR, msg.c_str());
+  std::abort();  // not reached
+}
+
+void FixTDEMClump::log(const std::string& msg) {
+  if (comm->me != 0) return;
+  if (screen) std::fputs(msg.c_str(), screen);
+  if (logfile) std::fputs(msg.c_str(), logfile);
+}
+
+int FixTDEMClump::setmask() {
+  int mask = 0;
+  mask |= INITIAL_INTEGRATE;
+  mask |= FINAL_INTEGRATE;
+  mask |= PRE_NEIGHBOR;
+  if (correction_ != cl::Correction::none) mask |= PRE_FORCE;
+  return mask;
+}
+
+/* ---------------------------------------------------------------------- input */
+
+void FixTDEMClump::parse(int narg, char** arg) {
+  auto need = [&](int iarg, int n, const std::string& key, const std::string& what) {
+    if (iarg + n >= narg) fail(where_ + ": keyword '" + key + "' needs " + what + "; syntax: " + kSyntax);
+  };
+  auto number = [&](const char* s, const std::string& key) {
+    char* end = nullptr;
+    const double v = std::strtod(s, &end);
+    if (end == s || *end != '\0' || !std::isfinite(v))
+      fail(where_ + ": keyword '" + key + "': value '" + std::string(s) + "' is not a number");
+    return v;
+  };
+  auto integer = [&](const char* s, const std::string& key, long long lo, long long hi) {
+    const double v = number(s, key);
+    if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi))
+      fail(where_ + ": keyword '" + key + "': value '" + std::string(s) + "' is not an integer in [" +
+           std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    return static_cast<long long>(v);
+  };
+  std::string name, kind, path, shape, integ = "columns";
+  double r = 0.0, d = 0.0, rho = -1.0;
+  int n = 2, resolution = 64;
+  int iarg = 3;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    if (key == "template") {
+      need(iarg, 1, key, "a name");
+      name = arg[iarg + 1];
+      iarg += 2;
+    } else if (key == "file") {
+      need(iarg, 1, key, "a path");
+      kind = "file";
+      path = arg[iarg + 1];
+      iarg += 2;
+    } else if (key == "shape") {
+      need(iarg, 3, key, "SHAPE r d [n]");
+      kind = "shape";
+      shape = arg[iarg + 1];
+      if (shape != "single" && shape != "dimer" && shape != "rod" && shape != "tetra" && shape != "square4" &&
+          shape != "cube8")
+        fail(where_ + ": keyword 'shape': value '" + shape +
+             "' is unknown; allowed: single, dimer, rod, tetra, square4, cube8");
+      r = number(arg[iarg + 2], "shape r");
+      d = number(arg[iarg + 3], "shape d");
+      if (!(r > 0.0)) fail(where_ + ": keyword 'shape': radius r = " + std::string(arg[iarg + 2]) + " is outside (0, inf)");
+      if (!(d >= 0.0))
+        fail(where_ + ": keyword 'shape': distance d = " + std::string(arg[iarg + 3]) + " is outside [0, inf)");
+      iarg += 4;
+      if (shape == "rod") {
+        if (iarg >= narg) fail(where_ + ": keyword 'shape rod' needs the number of spheres n; syntax: " + kSyntax);
+        n = static_cast<int>(integer(arg[iarg], "shape rod n", 1, 1000));
+        iarg += 1;
+      }
+    } else if (key == "density") {
+      need(iarg, 1, key, "a value");
+      rho = number(arg[iarg + 1], key);
+      if (!(rho > 0.0)) fail(where_ + ": keyword 'density': value " + std::string(arg[iarg + 1]) + " is outside (0, inf)");
+      iarg += 2;
+    } else if (key == "integration") {
+      need(iarg, 1, key, "a value (columns, voxel, monte_carlo)");
+      integ = arg[iarg + 1];
+      if (integ != "columns" && integ != "voxel" && integ != "monte_carlo")
+        fail(where_ + ": keyword 'integration': value '" + integ + "' is unknown; allowed: columns, voxel, monte_carlo");
+      iarg += 2;
+    } else if (key == "resolution") {
+      need(iarg, 1, key, "a value");
+      resolution = static_cast<int>(integer(arg[iarg + 1], key, 4, 4096));
+      iarg += 2;
+    } else if (key == "rotation") {
+      need(iarg, 1, key, "a value (splitting, explicit, richardson)");
+      const std::string v = arg[iarg + 1];
+      if (v == "splitting") scheme_ = cl::Rotation::splitting;
+      else if (v == "explicit") scheme_ = cl::Rotation::explicit_rodrigues;
+      else if (v == "richardson") scheme_ = cl::Rotation::richardson;
+      else fail(where_ + ": keyword 'rotation': value '" + v + "' is unknown; allowed: splitting, explicit, richardson");
+      iarg += 2;
+    } else if (key == "insert") {
+      need(iarg, 5, key, "N region REGID seed S");
+      ninsert_ = static_cast<int>(integer(arg[iarg + 1], "insert N", 1, 100000000));
+      if (std::string(arg[iarg + 2]) != "region")
+        fail(where_ + ": keyword 'insert': expected 'region' after N, got '" + std::string(arg[iarg + 2]) + "'");
+      insert_region_ = arg[iarg + 3];
+      if (std::string(arg[iarg + 4]) != "seed")
+        fail(where_ + ": keyword 'insert': expected 'seed' after the region, got '" + std::string(arg[iarg + 4]) + "'");
+      insert_seed_ = integer(arg[iarg + 5], "insert seed", 1, 2147483647);
+      iarg += 6;
+      while (iarg < narg) {
+        const std::string k2 = arg[iarg];
+        if (k2 == "type") {
+          need(iarg, 1, "insert type", "a value");
+          insert_type_ = static_cast<int>(integer(arg[iarg + 1], "insert type", 1, atom->ntypes));
+          iarg += 2;
+        } else if (k2 == "vel") {
+          need(iarg, 3, "insert vel", "vx vy vz");
+          for (int k = 0; k < 3; k++) insert_vel_[k] = number(arg[iarg + 1 + k], "insert vel");
+          iarg += 4;
+        } else {
+          break;
+        }
+      }
+    } else if (key == "bodies") {
+      need(iarg, 1, key, "a value (molecule)");
+      if (std::string(arg[iarg + 1]) != "molecule")
+        fail(where_ + ": keyword 'bodies': value '" + std::string(arg[iarg + 1]) + "' is unknown; allowed: molecule");
+      bodies_molecule_ = true;
+      iarg += 2;
+    } else if (key == "correction") {
+      need(iarg, 1, key, "a value (none, count, overlap, local_mass)");
+      try {
+        correction_ = cl::correction_from_string(arg[iarg + 1]);
+      } catch (const std::exception&) {
+        fail(where_ + ": keyword 'correction': value '" + std::string(arg[iarg + 1]) +
+             "' is unknown; allowed: none, count, overlap, local_mass");
+      }
+      iarg += 2;
+    } else {
+      fail(where_ + ": unknown keyword '" + key +
+           "'; allowed: template, file, shape, density, integration, resolution, rotation, insert, bodies, "
+           "correction; syntax: " +
+           kSyntax);
+    }
+  }
+  if (name.empty()) fail(where_ + ": missing keyword 'template NAME'; syntax: " + kSyntax);
+  if (kind.empty()) fail(where_ + ": missing 'file PATH' or 'shape SHAPE r d [n]'; syntax: " + kSyntax);
+  if (kind == "shape" && rho < 0.0)
+    fail(where_ + ": missing keyword 'density RHO' (needed for the mass of shape " + shape + ")");
+  if (kind == "shape" && shape != "single" && !(d > 0.0))
+    fail(where_ + ": keyword 'shape': distance d = 0 is outside (0, inf) for shape " + shape);
+  if (ninsert_ == 0) bodies_molecule_ = true;
+
+  const cl::Integration method = integ == "voxel"         ? cl::Integration::voxel
+                                 : integ == "monte_carlo" ? cl::Integration::monte_carlo
+                                                          : cl::Integration::columns;
+  try {
+    if (kind == "file")
+      tmpl_ = cl::read_template_file(path, rho > 0.0 ? rho : 0.0);
+    else
+      tmpl_ = cl::make_template(shape, cl::builtin_shape(shape, r, d, n), rho, resolution, method);
+    cl::exact_if_disjoint(tmpl_);
+  } catch (const std::exception& e) {
+    fail(where_ + ": template: " + std::string(e.what()));
+  }
+  tmpl_.name = name;
+  bprop_ = cl::Body::from(tmpl_);
+  nsph_ = static_cast<int>(tmpl_.body.size());
+  sphere_mass_ = cl::sphere_masses(tmpl_);
+  log(where_ + ": template " + name + " (" + std::to_string(nsph_) + " spheres): mass " + num(tmpl_.mp.mass) +
+      ", principal inertia " + num(tmpl_.mp.principal[0]) + " " + num(tmpl_.mp.principal[1]) + " " +
+      num(tmpl_.mp.principal[2]) + ", bounding radius " + num(tmpl_.bounding_radius) + ", rotation " +
+      cl::to_string(scheme_) + ", multiple-contact correction " + cl::to_string(correction_) + "\n");
+}
+
+/* ---------------------------------------------------------------------- bodies */
+
+void FixTDEMClump::add_body(int mol, const cl::State& s, const int* tags) {
+  const int b = static_cast<int>(st_.size());
+  st_.push_back(s);
+  molid_.push_back(mol);
+  fsum_.resize(6 * st_.size(), 0.0);
+  rot_.push_back(cl::rotation_matrix(s.q));
+  omg_.push_back(cl::angular_velocity(s, bprop_));
+  for (int k = 0; k < nsph_; k++) {
+    btags_.push_back(tags[k]);
+    slot_[tags[k]] = b * nsph_ + k;
+  }
+  size_array_rows = static_cast<int>(st_.size());
+}
+
+// Modify calls the constructor, post_create_pre_restart(), restart() (if the restart file holds a
+// record of this fix) and then post_create(): insertion only without a restart record.
+// Bodies from the molecules present are formed here already, so that the rows of the global array
+// exist when a thermo_style or variable referring to them is defined (LIGGGHTS checks the range then).
+void FixTDEMClump::post_create() {
+  if (ninsert_ > 0 && !restarted_) insert_clumps();
+  else if (ninsert_ > 0) log(where_ + ": bodies read from the restart file, 'insert' is skipped\n");
+  if (bodies_molecule_ && !restarted_ && form_bodies() > 0) {
+    have_force_ = false;
+    need_set_ = true;
+  }
+}
+
+void FixTDEMClump::insert_clumps() {
+  const int iregion = domain->find_region(insert_region_.c_str());
+  if (iregion < 0) fail(where_ + ": keyword 'insert': region '" + insert_region_ + "' does not exist");
+  Region* region = domain->regions[iregion];
+  if (!region->bboxflag)
+    fail(where_ + ": keyword 'insert': region '" + insert_region_ + "' has no bounding box (use a bounded region)");
+  region->prematch();
+  // existing spheres: every rank sees all
+  const int nlocal = atom->nlocal;
+  std::vector<double> mine(4 * nlocal);
+  for (int i = 0; i < nlocal; i++) {
+    for (int k = 0; k < 3; k++) mine[4 * i + k] = atom->x[i][k];
+    mine[4 * i + 3] = atom->radius[i];
+  }
+  int nme = 4 * nlocal;
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int ntot = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = ntot;
+    ntot += counts[p];
+  }
+  std::vector<double> old(ntot);
+  MPI_Allgatherv(mine.data(), nme, MPI_DOUBLE, old.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+
+  int maxtag = 0, maxmol = 0, all = 0;
+  for (int i = 0; i < nlocal; i++) {
+    maxtag = std::max(maxtag, atom->tag[i]);
+    maxmol = std::max(maxmol, atom->molecule[i]);
+  }
+  MPI_Allreduce(&maxtag, &all, 1, MPI_INT, MPI_MAX, world);
+  maxtag = all;
+  MPI_Allreduce(&maxmol, &all, 1, MPI_INT, MPI_MAX, world);
+  maxmol = all;
+  for (const int m : molid_) maxmol = std::max(maxmol, m);
+
+  cl::PlacementInput in;
+  in.n = ninsert_;
+  in.seed = static_cast<std::uint64_t>(insert_seed_);
+  in.lo = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
+  in.hi = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
+  in.inside = [&](const Vec3& p, double r) {
+    if (!region->match(p[0], p[1], p[2])) return false;
+    for (int k = 0; k < 3; k++)
+      for (int sgn = -1; sgn <= 1; sgn += 2) {
+        Vec3 q = p;
+        q[k] += sgn * r;
+        if (!region->match(q[0], q[1], q[2])) return false;
+      }
+    return true;
+  };
+  in.delta = [&](const Vec3& a, const Vec3& b) {
+    double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
+    domain->minimum_image(dx, dy, dz);
+    return Vec3{dx, dy, dz};
+  };
+  for (int i = 0; i < ntot / 4; i++) in.existing.push_back({Vec3{old[4 * i], old[4 * i + 1], old[4 * i + 2]}, old[4 * i + 3]});
+  in.period = {domain->xperiodic ? domain->xprd : 0.0, domain->yperiodic ? domain->yprd : 0.0,
+               domain->zperiodic ? domain->zprd : 0.0};
+  const cl::PlacementResult res = cl::place_clumps(tmpl_, in);
+  if (!res.complete)
+    fail(where_ + ": keyword 'insert': placed only " + std::to_string(res.bodies.size()) + " of " +
+         std::to_string(ninsert_) + " clumps in region " + insert_region_ + ": " + std::to_string(in.max_failures) +
+         " random attempts in a row found no free place (region too small or too full); use a larger region or a "
+         "smaller N");
+
+  const int nprev = atom->nlocal;
+  int mycreated = 0;
+  const double *sublo = domain->sublo, *subhi = domain->subhi;
+  for (int b = 0; b < ninsert_; b++) {
+    std::vector<int> tags(nsph_);
+    const int mol = maxmol + 1 + b;
+    for (int k = 0; k < nsph_; k++) tags[k] = maxtag + 1 + b * nsph_ + k;
+    cl::State s = res.bodies[b];
+    s.v = {insert_vel_[0], insert_vel_[1], insert_vel_[2]};
+    s.L = {0, 0, 0};
+    add_body(mol, s, tags.data());
+    for (int k = 0; k < nsph_; k++) {
+      const Vec3& xu = res.spheres[static_cast<std::size_t>(b) * nsph_ + k];
+      double xw[3] = {xu[0], xu[1], xu[2]};
+      tagint img = (static_cast<tagint>(IMGMAX) << IMG2BITS) | (static_cast<tagint>(IMGMAX) << IMGBITS) | IMGMAX;
+      domain->remap(xw, img);
+      bool own = true;
+      for (int dd = 0; dd < 3; dd++) {
+        const bool top = comm->myloc[dd] == comm->procgrid[dd] - 1;
+        if (!(xw[dd] >= sublo[dd] && (xw[dd] < subhi[dd] || (top && !domain->periodicity[dd] && xw[dd] <= subhi[dd]))))
+          own = false;
+      }
+      if (!own) continue;
+      atom->avec->create_atom(insert_type_, xw);
+      const int i = atom->nlocal - 1;
+      atom->tag[i] = tags[k];
+      atom->molecule[i] = mol;
+      atom->image[i] = img;
+      atom->mask[i] |= groupbit;
+      atom->radius[i] = tmpl_.body[k].r;
+      atom->rmass[i] = sphere_mass_[k];
+      for (int dd = 0; dd < 3; dd++) {
+        atom->v[i][dd] = s.v[dd];
+        atom->omega[i][dd] = 0.0;
+      }
+      mycreated++;
+    }
+  }
+  int created = 0;
+  MPI_Allreduce(&mycreated, &created, 1, MPI_INT, MPI_SUM, world);
+  if (created != ninsert_ * nsph_)
+    fail(where_ + ": keyword 'insert': " + std::to_string(created) + " spheres created instead of " +
+         std::to_string(ninsert_ * nsph_) + " (a sphere outside every subdomain: is region " + insert_region_ +
+         " inside the box?)");
+  atom->natoms += created;
+  for (int m = 0; m < modify->nfix; m++) {
+    Fix* f = modify->fix[m];
+    if (!f->create_attribute) continue;
+    f->pre_set_arrays();
+    for (int i = nprev; i < atom->nlocal; i++) f->set_arrays(i);
+  }
+  if (atom->map_style) {
+    atom->nghost = 0;
+    atom->map_init();
+    atom->map_set();
+  }
+  log(where_ + ": inserted " + std::to_string(ninsert_) + " clumps (" + std::to_string(created) +
+      " spheres) in region " + insert_region_ + " after " + std::to_string(res.attempts) + " attempts; molecule IDs " +
+      std::to_string(maxmol + 1) + "-" + std::to_string(maxmol + ninsert_) + ", atom IDs " +
+      std::to_string(maxtag + 1) + "-" + std::to_string(maxtag + created) + "\n");
+}
+
+// Bodies from the group's molecules that are not bodies yet (atom ID order = template order).
+int FixTDEMClump::form_bodies() {
+  const int nlocal = atom->nlocal;
+  constexpr int W = 12;  // tag, mol, xu3, v3, omega3, radius
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || atom->molecule[i] <= 0) continue;
+    if (slot_.count(atom->tag[i])) continue;
+    double xu[3];
+    domain->unmap(atom->x[i], atom->image[i], xu);
+    const double row[W] = {static_cast<double>(atom->tag[i]), static_cast<double>(atom->molecule[i]), xu[0], xu[1],
+                           xu[2], atom->v[i][0], atom->v[i][1], atom->v[i][2], atom->omega[i][0], atom->omega[i][1],
+                           atom->omega[i][2], atom->radius[i]};
+    mine.insert(mine.end(), row, row + W);
+  }
+  int nme = static_cast<int>(mine.size());
+  std::vector<int> counts(comm->nprocs), displs(comm->nprocs);
+  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
+  int ntot = 0;
+  for (int p = 0; p < comm->nprocs; p++) {
+    displs[p] = ntot;
+    ntot += counts[p];
+  }
+  std::vector<double> rows(ntot);
+  MPI_Allgatherv(mine.data(), nme, MPI_DOUBLE, rows.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
+  std::map<int, std::vector<const double*>> mols;
+  for (int k = 0; k < ntot / W; k++) mols[static_cast<int>(rows[W * k + 1])].push_back(&rows[W * k]);
+  for (const int m : molid_)
+    if (mols.count(m)) fail(where_ + ": molecule " + std::to_string(m) + " is already a body; its spheres must not change");
+  int nnew = 0;
+  for (auto& kv : mols) {
+    auto& v = kv.second;
+    std::sort(v.begin(), v.end(), [](const double* a, const double* b) { return a[0] < b[0]; });
+    if (static_cast<int>(v.size()) != nsph_)
+      fail(where_ + ": molecule " + std::to_string(kv.first) + " has " + std::to_string(v.size()) +
+           " spheres in group " + group->names[igroup] + ", template " + tmpl_.name + " has " + std::to_string(nsph_));
+    std::vector<int> tags(nsph_);
+    std::vector<Vec3> p(nsph_), vel(nsph_), om(nsph_);
+    for (int k = 0; k < nsph_; k++) {
+      tags[k] = static_cast<int>(v[k][0]);
+      const double r = tmpl_.body[k].r;
+      if (std::fabs(v[k][11] - r) > 1e-6 * r)
+        fail(where_ + ": atom " + std::to_string(tags[k]) + " (molecule " + std::to_string(kv.first) + ") has radius " +
+             num(v[k][11]) + " but sphere " + std::to_string(k + 1) + " of template " + tmpl_.name + " has radius " +
+             num(r));
+      p[k] = {v[k][2], v[k][3], v[k][4]};
+      vel[k] = {v[k][5], v[k][6], v[k][7]};
+      om[k] = {v[k][8], v[k][9], v[k][10]};
+    }
+    cl::BodyFit fit;
+    try {
+      fit = cl::fit_body(tmpl_, bprop_, p, vel, om);
+    } catch (const std::exception& e) {
+      fail(where_ + ": molecule " + std::to_string(kv.first) + ": " + e.what());
+    }
+    const double allowed = 1e-6 * tmpl_.bounding_radius;
+    if (fit.residual > allowed)
+      fail(where_ + ": the spheres of molecule " + std::to_string(kv.first) + " (atom IDs " + std::to_string(tags[0]) +
+           "..., in ID order) are not a rigid copy of template " + tmpl_.name + ": largest distance " +
+           num(fit.residual) + " from the best fit (allowed " + num(allowed) + ")");
+    add_body(kv.first, fit.state, tags.data());
+    nnew++;
+  }
+  if (nnew > 0)
+    log(where_ + ": " + std::to_string(nnew) + " bodies formed from the molecules of group " + group->names[igroup] +
+        " (" + std::to_string(st_.size()) + " bodies in all)\n");
+  return nnew;
+}
+
+// Per-atom body and sphere index of owned and ghost atoms; sphere radius and mass from the template.
+void FixTDEMClump::map_atoms() {
+  const int nall = atom->nlocal + atom->nghost;
+  if (atom->nmax > nmax_idx_) {
+    nmax_idx_ = atom->nmax;
+    memory->destroy(bodyidx_);
+    memory->destroy(sphidx_);
+    memory->create(bodyidx_, nmax_idx_, "tdem/clump:bodyidx");
+    memory->create(sphidx_, nmax_idx_, "tdem/clump:sphidx");
+  }
+  int nmine = tdem::clumps::map_clump_atoms(nall, atom->nlocal, atom->tag, slot_, nsph_, tmpl_, sphere_mass_,
+                                            bodyidx_, sphidx_, atom->radius, atom->rmass);
+  int all = 0;
+  MPI_Allreduce(&nmine, &all, 1, MPI_INT, MPI_SUM, world);
+  if (all != static_cast<int>(st_.size()) * nsph_)
+    fail(where_ + ": " + std::to_string(all) + " clump spheres found, " + std::to_string(st_.size()) + " bodies need " +
+         std::to_string(st_.size() * nsph_) + " (clump spheres lost or deleted)");
+  // Layout of the per-step reduction (ownership changes only here, after the exchange): a body
+  // whose spheres one rank owns entirely is summed on that rank (6 doubles), a body split over
+  // ranks contributes its per-sphere slots (6 nsph doubles), summed after the reduction in
+  // template order - so the result is bitwise the same for any number of ranks.
+  const std::size_t nb = st_.size();
+  std::vector<int> cnt(nb, 0), mx(nb, 0);
+  for (int i = 0; i < atom->nlocal; i++)
+    if (bodyidx_[i] >= 0) cnt[bodyidx_[i]]++;
+  if (comm->nprocs > 1 && nb > 0)
+    MPI_Allreduce(cnt.data(), mx.data(), static_cast<int>(nb), MPI_INT, MPI_MAX, world);
+  else
+    mx = cnt;
+  red_off_.assign(nb + 1, 0);
+  split_.assign(nb, 0);
+  for (std::size_t b = 0; b < nb; b++) {
+    split_[b] = mx[b] < nsph_ ? 1 : 0;
+    red_off_[b + 1] = red_off_[b] + (split_[b] ? 6 * nsph_ : 6);
+  }
+}
+
+void FixTDEMClump::refresh_kinematics() {
+  for (std::size_t b = 0; b < st_.size(); b++) {
+    rot_[b] = cl::rotation_matrix(st_[b].q);
+    const Vec3 pi = cl::mul_t(rot_[b], st_[b].L);
+    omg_[b] = cl::mul(rot_[b], Vec3{pi[0] / bprop_.inertia[0], pi[1] / bprop_.inertia[1], pi[2] / bprop_.inertia[2]});
+  }
+}
+
+/* ---------------------------------------------------------------------- run */
+
+// Molecules that appeared since the fix was created become bodies here.
+void FixTDEMClump::init() {
+  if (correction_ != cl::Correction::none) {
+    auto*& act = tdem::liggghts::clump_link::active;
+    if (act && act != this)
+      fail(where_ + ": keyword 'correction': another fix tdem/clump already applies a multiple-contact correction "
+                    "(at most one fix may have a correction other than none)");
+    act = this;
+  }
+  if (bodies_molecule_ && form_bodies() > 0) {
+    formed_ = true;
+    have_force_ = false;
+    need_set_ = true;
+  }
+  // the spheres of one body must not interact with each other
+  // the spheres of one body must not interact with each other: every clump sphere must be in the
+  // group of a `neigh_modify exclude molecule` entry
+  if (nsph_ > 1) {
+    std::vector<int> bits;
+    for (int g : NeighborExclusionPeek::molecule_groups(neighbor)) bits.push_back(group->bitmask[g]);
+    int uncovered = 0, any = 0;
+    for (int i = 0; i < atom->nlocal; i++) {
+      if (!slot_.count(atom->tag[i])) continue;
+      bool covered = false;
+      for (int bit : bits)
+        if (atom->mask[i] & bit) covered = true;
+      if (!covered) uncovered = 1;
+    }
+    MPI_Allreduce(&uncovered, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any)
+      fail(where_ + ": the spheres of one clump would interact with each other: add 'neigh_modify exclude molecule " +
+           std::string(group->names[igroup]) + "' (or a group holding all clump spheres) before the run");
+  }
+  // another time integrator on the same atoms would move them twice
+  for (int i = 0; i < modify->nfix; i++) {
+    Fix* f = modify->fix[i];
+    if (f == this || !f->time_integrate) continue;
+    if (std::strcmp(f->style, "tdem/clump") == 0) continue;  // moves only its own bodies, not its group
+    int mine = 0, any = 0;
+    for (int j = 0; j < atom->nlocal; j++)
+      if ((atom->mask[j] & f->groupbit) &&
+          (slot_.count(atom->tag[j]) || (bodies_molecule_ && (atom->mask[j] & groupbit) && atom->molecule[j] > 0)))
+        mine = 1;
+    MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
+    if (any)
+      fail(where_ + ": fix " + std::string(f->id) + " (" + std::string(f->style) +
+           ") also integrates clump spheres; exclude them from its group");
+  }
+}
+
+void FixTDEMClump::setup_pre_neighbor() {
+  map_atoms();
+  if (need_set_) {  // bodies just formed: sphere velocities of the rigid motion
+    refresh_kinematics();
+    set_spheres(false);
+    need_set_ = false;
+  }
+}
+
+void FixTDEMClump::pre_neighbor() { map_atoms(); }
+
+// The force of the last final_integrate if there is one (continuing run or restart), else the
+// set-up force.
+void FixTDEMClump::setup(int) {
+  refresh_kinematics();
+  if (!have_force_) sum_forces();
+  have_force_ = true;
+}
+
+void FixTDEMClump::reset_dt() {}
+
+// fsum <- force and torque about the com of every body: per-sphere slots (local), summed per body
+// in template order, reduced over the ranks with the layout of map_atoms.
+void FixTDEMClump::sum_forces() {
+  const std::size_t nb = st_.size(), nslot = nb * nsph_;
+  if (slotf_.size() != 6 * nslot) slotf_.assign(6 * nslot, 0.0);
+  else std::fill(slotf_.begin(), slotf_.end(), 0.0);
+  const int nlocal = atom->nlocal;
+  double** f = atom->f;
+  double** t = atom->torque;
+  for (int i = 0; i < nlocal; i++) {
+    const int b = bodyidx_[i];
+    if (b < 0) continue;
+    const Vec3 r = cl::mul(rot_[b], tmpl_.body[sphidx_[i]].x);
+    double* fs = &slotf_[6 * (static_cast<std::size_t>(b) * nsph_ + sphidx_[i])];
+    fs[0] = f[i][0];
+    fs[1] = f[i][1];
+    fs[2] = f[i][2];
+    fs[3] = r[1] * f[i][2] - r[2] * f[i][1] + t[i][0];
+    fs[4] = r[2] * f[i][0] - r[0] * f[i][2] + t[i][1];
+    fs[5] = r[0] * f[i][1] - r[1] * f[i][0] + t[i][2];
+  }
+  auto body_sum = [&](const double* fs, double* fb) {
+    for (int c = 0; c < 6; c++) fb[c] = fs[c];
+    for (int k = 1; k < nsph_; k++)
+      for (int c = 0; c < 6; c++) fb[c] += fs[6 * k + c];
+  };
+  if (comm->nprocs == 1) {
+    for (std::size_t b = 0; b < nb; b++) body_sum(&slotf_[6 * b * nsph_], &fsum_[6 * b]);
+    return;
+  }
+  red_.assign(red_off_[nb], 0.0);
+  for (std::size_t b = 0; b < nb; b++) {
+    const double* fs = &slotf_[6 * b * nsph_];
+    double* out = &red_[red_off_[b]];
+    if (split_[b]) std::copy(fs, fs + 6 * nsph_, out);
+    else body_sum(fs, out);  // zero on the ranks that do not own the body
+  }
+  MPI_Allreduce(MPI_IN_PLACE, red_.data(), static_cast<int>(red_.size()), MPI_DOUBLE, MPI_SUM, world);
+  for (std::size_t b = 0; b < nb; b++) {
+    const double* in = &red_[red_off_[b]];
+    if (split_[b]) body_sum(in, &fsum_[6 * b]);
+    else std::copy(in, in + 6, &fsum_[6 * b]);
+  }
+}
+
+// owned spheres from their bodies: x (if positions, with the image flags), v, omega
+void FixTDEMClump::set_spheres(bool positions) {
+  const int nlocal = atom->nlocal;
+  const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
+  for (int i = 0; i < nlocal; i++) {
+    const int b = bodyidx_[i];
+    if (b < 0) continue;
+    const Vec3 r = cl::mul(rot_[b], tmpl_.body[sphidx_[i]].x);
+    if (positions) {
+      const tagint img = atom->image[i];
+      const int box[3] = {static_cast<int>(img & IMGMASK) - IMGMAX, static_cast<int>(img >> IMGBITS & IMGMASK) - IMGMAX,
+                          static_cast<int>(img >> IMG2BITS) - IMGMAX};
+      for (int k = 0; k < 3; k++) atom->x[i][k] = st_[b].x[k] + r[k] - box[k] * prd[k];
+    }
+    const Vec3& w = omg_[b];
+    atom->v[i][0] = st_[b].v[0] + w[1] * r[2] - w[2] * r[1];
+    atom->v[i][1] = st_[b].v[1] + w[2] * r[0] - w[0] * r[2];
+    atom->v[i][2] = st_[b].v[2] + w[0] * r[1] - w[1] * r[0];
+    atom->omega[i][0] = w[0];
+    atom->omega[i][1] = w[1];
+    atom->omega[i][2] = w[2];
+  }
+}
+
+void FixTDEMClump::initial_integrate(int) {
+  const double h = update->dt, c = force->ftm2v;
+  for (std::size_t b = 0; b < st_.size(); b++) {
+    const double* fb = &fsum_[6 * b];
+    cl::initial_integrate(st_[b], bprop_, Vec3{c * fb[0], c * fb[1], c * fb[2]}, Vec3{c * fb[3], c * fb[4], c * fb[5]},
+                          h, scheme_);
+  }
+  refresh_kinematics();
+  set_spheres(true);
+}
+
+void FixTDEMClump::final_integrate() {
+  sum_forces();
+  const double h = update->dt, c = force->ftm2v;
+  for (std::size_t b = 0; b < st_.size(); b++) {
+    const double* fb = &fsum_[6 * b];
+    cl::final_integrate(st_[b], bprop_, Vec3{c * fb[0], c * fb[1], c * fb[2]}, Vec3{c * fb[3], c * fb[4], c * fb[5]}, h);
+  }
+  refresh_kinematics();
+  set_spheres(false);
+}
+
+/* ---------------------------------------------------------------------- multiple-contact correction */
+
+// The granular pair and the wall/gran fixes whose contacts are tallied. The correction acts through
+// the surface model tdem/clump (surface_model_tdem_clump.h): a pair style or wall/gran fix without
+// it is an error (its clump contacts would silently stay uncorrected).
+void FixTDEMClump::setup_correction() {
+  const std::string what = where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': ";
+  pair_gran_ = force->pair ? dynamic_cast<PairGran*>(force->pair) : nullptr;
+  if (force->pair && !pair_gran_)
+    fail(what + "pair style '" + std::string(force->pair_style) +
+         "' is not a granular pair style (pair_style gran model ... surface tdem/clump)");
+  if (pair_gran_ && !pair_gran_->contact_match("surface", tdem::liggghts::kSurfaceClumpName))
+    fail(what + "pair style '" + std::string(force->pair_style) +
+         "' has no 'surface tdem/clump'; add 'surface tdem/clump' to its contact model (pair_style gran model M "
+         "tangential T surface tdem/clump), through which the correction acts");
+  walls_.clear();
+  wall_sides_.clear();
+  for (int m = 0; m < modify->nfix; m++) {
+    Fix* f = modify->fix[m];
+    if (std::strncmp(f->style, "wall/gran", 9) != 0) continue;
+    FixWallGran* w = static_cast<FixWallGran*>(f);
+    const void* owner = static_cast<LIGGGHTS::IContactHistorySetup*>(w);
+    if (!w->contact_match("surface", tdem::liggghts::kSurfaceClumpName))
+      fail(what + "fix " + std::string(f->id) + " (" + std::string(f->style) +
+           ") has no 'surface tdem/clump'; add 'surface tdem/clump' to its contact model (fix ID group wall/gran "
+           "model M tangential T surface tdem/clump ...), through which the correction acts");
+    if (w->is_mesh_wall()) {
+      if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share)
+        fail(what + "fix " + std::string(f->id) + " is a mesh wall; count and overlap support primitive walls only "
+                                                    "(allowed with meshes: none, local_mass)");
+      continue;
+    }
+    walls_.push_back(w);
+    wall_sides_.push_back({owner, kWallSide + m});
+  }
+  // overlaps are at most a sphere diameter (the tally's fixed point resolves 2^-80 of it)
+  double dmax = 0.0;
+  for (const auto& s : tmpl_.body) dmax = std::max(dmax, 2.0 * s.r);
+  for (int i = 0; i < atom->nlocal; i++) dmax = std::max(dmax, 2.0 * atom->radius[i]);
+  double all = dmax;
+  MPI_Allreduce(&dmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  tally_.set_length_scale(all > 0.0 ? all : 1.0);
+}
+
+void FixTDEMClump::setup_pre_force(int) {
+  setup_correction();
+  pre_force(0);
+}
+
+void FixTDEMClump::pre_force(int) {
+  if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share) build_tally();
+}
+
+// Every touching contact with a body of this fix on at least one side, per pair of sides, global
+// over the ranks (contact_tally.h). Same touching tests as the pair loop (rsq < radsum^2) and the
+// primitive wall loop (resolveContact <= 0).
+void FixTDEMClump::build_tally() {
+  tally_.clear();
+  const int nlocal = atom->nlocal;
+  double** x = atom->x;
+  const double* radius = atom->radius;
+  const int* tag = atom->tag;
+  auto side = [&](int a) -> std::int64_t {
+    return bodyidx_[a] >= 0 ? std::int64_t(bodyidx_[a]) : -(std::int64_t(tag[a]) + 1);
+  };
+  if (pair_gran_ && pair_gran_->list) {
+    NeighList* list = pair_gran_->list;
+    const bool newton = force->newton_pair != 0;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int* jlist = list->firstneigh[i];
+      const int jnum = list->numneigh[i];
+      for (int jj = 0; jj < jnum; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        if (bodyidx_[i] < 0 && bodyidx_[j] < 0) continue;
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+        const double rsq = dx * dx + dy * dy + dz * dz;
+        const double radsum = radius[i] + radius[j];
+        if (!(rsq < radsum * radsum)) continue;
+        const std::int64_t a = side(i), b = side(j);
+        if (a == b) continue;
+        // newton off: a pair with a ghost partner is in the lists of both owners' ranks (or twice
+        // on one rank across a periodic boundary): counted where tag[i] <= tag[j] (equal: two
+        // images of one sphere, two contacts); the other copy only makes the pair known here
+        tally_.add(a, b, radsum - std::sqrt(rsq), newton || j < nlocal || tag[i] <= tag[j]);
+      }
+    }
+  }
+  const int* mask = atom->mask;
+  for (std::size_t w = 0; w < walls_.size(); w++) {
+    PrimitiveWall* pw = walls_[w]->primitiveWall();
+    if (!pw) continue;
+    const int bit = walls_[w]->groupbit;
+    for (int i = 0; i < nlocal; i++) {
+      if (bodyidx_[i] < 0 || !(mask[i] & bit)) continue;
+      double delta[3];
+      const double d = pw->resolveContact(x[i], radius[i], delta);
+      if (d <= 0.0) tally_.add(bodyidx_[i], wall_sides_[w].second, -d);
+    }
+  }
+  cl::merge_over_ranks(tally_, world, exchange_);
+}
+
+// 1/M + (r x n).I^-1 (r x n) of the body of atom a (r: sphere centre - com; the contact point lies
+// on the normal through the centre, so r x n is that of the contact point), 1/m of a free sphere.
+double FixTDEMClump::inverse_side_mass(int a, const double* n) const {
+  const int b = bodyidx_[a];
+  if (b < 0) return 1.0 / atom->rmass[a];
+  const Vec3 r = cl::mul(rot_[b], tmpl_.body[sphidx_[a]].x);
+  const Vec3 rn = {r[1] * n[2] - r[2] * n[1], r[2] * n[0] - r[0] * n[2], r[0] * n[1] - r[1] * n[0]};
+  const Vec3 w = cl::mul_t(rot_[b], rn);  // body frame: the principal inertia is diagonal
+  return 1.0 / bprop_.mass + w[0] * w[0] / bprop_.inertia[0] + w[1] * w[1] / bprop_.inertia[1] +
+         w[2] * w[2] / bprop_.inertia[2];
+}
+
+double FixTDEMClump::prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const {
+  const int i = sidata.i;
+  const int bi = bodyidx_[i];
+  std::int64_t a, b;
+  if (sidata.is_wall) {
+    if (bi < 0) return 1.0;
+    if (correction_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / inverse_side_mass(i, sidata.en);
+      return 1.0;
+    }
+    a = bi;
+    b = -1;
+    for (const auto& ws : wall_sides_)
+      if (ws.first == owner) b = ws.second;
+    if (b < 0) return 1.0;
+  } else {
+    const int j = sidata.j;
+    const int bj = bodyidx_[j];
+    if (bi < 0 && bj < 0) return 1.0;
+    if (correction_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / (inverse_side_mass(i, sidata.en) + inverse_side_mass(j, sidata.en));
+      return 1.0;
+    }
+    a = bi >= 0 ? std::int64_t(bi) : -(std::int64_t(atom->tag[i]) + 1);
+    b = bj >= 0 ? std::int64_t(bj) : -(std::int64_t(atom->tag[j]) + 1);
+  }
+  return tally_.pair_factor(correction_, tally_.find(a, b), sidata.deltan);
+}
+
+/* ---------------------------------------------------------------------- output */
+
+double FixTDEMClump::compute_scalar() {
+  double e = 0.0;
+  for (const auto& s : st_) e += cl::kinetic_energy(s, bprop_);
+  return e * force->mvv2e;
+}
+
+// [1] bodies, [2-4] total momentum, [5-7] sum of the bodies' angular momenta about their com,
+// [8] translational, [9] rotational kinetic energy
+double FixTDEMClump::compute_vector(int n) {
+  if (n == 0) return static_cast<double>(st_.size());
+  double out = 0.0;
+  for (const auto& s : st_) {
+    if (n >= 1 && n <= 3) out += bprop_.mass * s.v[n - 1];
+    else if (n >= 4 && n <= 6) out += s.L[n - 4];
+    else if (n == 7) out += 0.5 * bprop_.mass * cl::dot(s.v, s.v) * force->mvv2e;
+    else if (n == 8) out += cl::rotational_energy(s, bprop_) * force->mvv2e;
+  }
+  return out;
+}
+
+// row per body: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
+double FixTDEMClump::compute_array(int i, int j) {
+  if (i < 0 || i >= static_cast<int>(st_.size())) return 0.0;
+  const cl::State& s = st_[i];
+  if (j == 0) return static_cast<double>(molid_[i]);
+  if (j <= 3) return s.x[j - 1];
+  if (j <= 6) return s.v[j - 4];
+  if (j == 7) return s.q.w;
+  if (j == 8) return s.q.x;
+  if (j == 9) return s.q.y;
+  if (j == 10) return s.q.z;
+  if (j <= 13) return s.L[j - 11];
+  if (j <= 16) return cl::angular_velocity(s, bprop_)[j - 14];
+  return 0.0;
+}
+
+// "tdem_clump_body": int per atom (owned and ghost, valid after the first set-up), body index or -1;
+// "tdem_clump_sphere": int per atom, sphere index in the template or -1;
+// "tdem_clump_mass": double, the body mass (dim 0)
+void* FixTDEMClump::extract(const char* name, int& dim) {
+  dim = 1;
+  if (std::strcmp(name, "tdem_clump_body") == 0) return static_cast<void*>(bodyidx_);
+  if (std::strcmp(name, "tdem_clump_sphere") == 0) return static_cast<void*>(sphidx_);
+  dim = 0;
+  if (std::strcmp(name, "tdem_clump_mass") == 0) return static_cast<void*>(&bprop_.mass);
+  return nullptr;
+}
+
+/* ---------------------------------------------------------------------- restart */
+
+// magic, nbody, nsph, formed, have_force, then per body: mol, x, v, q, L, F, T, nsph tags
+void FixTDEMClump::write_restart(FILE* fp) {
+  if (comm->me != 0) return;
+  std::vector<double> buf = {kRestartMagic, static_cast<double>(st_.size()), static_cast<double>(nsph_),
+                             formed_ ? 1.0 : 0.0, have_force_ ? 1.0 : 0.0};
+  for (std::size_t b = 0; b < st_.size(); b++) {
+    const cl::State& s = st_[b];
+    const double* F = &fsum_[6 * b];
+    const double row[kBodyDoubles] = {static_cast<double>(molid_[b]), s.x[0], s.x[1], s.x[2], s.v[0], s.v[1], s.v[2],
+                                      s.q.w, s.q.x, s.q.y, s.q.z, s.L[0], s.L[1], s.L[2],
+                                      F[0], F[1], F[2], F[3], F[4], F[5]};
+    buf.insert(buf.end(), row, row + kBodyDoubles);
+    for (int k = 0; k < nsph_; k++) buf.push_back(static_cast<double>(btags_[b * nsph_ + k]));
+  }
+  const int size = static_cast<int>(buf.size() * sizeof(double));
+  fwrite(&size, sizeof(int), 1, fp);
+  fwrite(buf.data(), sizeof(double), buf.size(), fp);
+}
+
+void FixTDEMClump::restart(char* raw) {
+  const double* buf = reinterpret_cast<const double*>(raw);
+  if (buf[0] != kRestartMagic) fail(where_ + ": the restart record is not a tdem/clump record of this version");
+  const int nb = static_cast<int>(buf[1]), ns = static_cast<int>(buf[2]);
+  if (ns != nsph_)
+    fail(where_ + ": the restart file has clumps of " + std::to_string(ns) + " spheres, template " + tmpl_.name +
+         " has " + std::to_string(nsph_));
+  formed_ = buf[3] != 0.0;
+  have_force_ = buf[4] != 0.0;
+  st_.clear();
+  molid_.clear();
+  btags_.clear();
+  fsum_.clear();
+  rot_.clear();
+  omg_.clear();
+  slot_.clear();
+  const double* p = buf + 5;
+  for (int b = 0; b < nb; b++) {
+    cl::State s;
+    s.x = {p[1], p[2], p[3]};
+    s.v = {p[4], p[5], p[6]};
+    s.q = {p[7], p[8], p[9], p[10]};
+    s.L = {p[11], p[12], p[13]};
+    std::vector<int> tags(nsph_);
+    for (int k = 0; k < nsph_; k++) tags[k] = static_cast<int>(p[kBodyDoubles + k]);
+    add_body(static_cast<int>(p[0]), s, tags.data());
+    for (int c = 0; c < 6; c++) fsum_[6 * b + c] = p[14 + c];
+    p += kBodyDoubles + nsph_;
+  }
+  restarted_ = true;
+  log(where_ + ": " + std::to_string(nb) + " bodies read from the restart file\n");
+}
+
+double FixTDEMClump::memory_usage() {
+  return static_cast<double>(nmax_idx_) * 2 * sizeof(int) +
+         static_cast<double>(st_.size()) * (sizeof(cl::State) + sizeof(Mat3) + sizeof(Vec3) + 6 * sizeof(double)) +
+         static_cast<double>(btags_.size()) * (sizeof(int) + 6 * sizeof(double) + 32);
+}

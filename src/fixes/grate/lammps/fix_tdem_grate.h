@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: fix tdem/grate, a stepped grate of fixed and moving bar rows (issue 7,
+// physics_reference.md 7.1, docs/grate.md for the core, docs/grate_lammps.md for the syntax).
+//
+//   fix ID group tdem/grate <law: as fix tdem/wall/gran> <grate keywords> <motion keywords>
+//       [vtk N prefix] [max_contacts K]
+//
+// The bars (and the optional side walls) are the oriented boxes of tdem::grate::Grate::boxes(t)
+// at the grate time t = (step - step of definition) * dt. Every owned atom of the group is tested
+// against every box; a touching box acts on the sphere like fix tdem/wall/gran (infinite mass and
+// radius, relative velocity against the box's translation velocity). An atom may touch up to K
+// boxes at once; each contact keeps its own history slot (box index + the law's history), the
+// slots migrate with the atoms and are written to restart files. The grate time is a global
+// restart quantity, so a restarted run continues the bar motion.
+//
+// Interface for other tdem styles (compute tdem/mixing ...): extract("tdem_grate") ->
+// const tdem::grate::Grate *, extract("tdem_grate_time") -> double * (grate time of the last
+// force evaluation), both dim 0.
+
+#ifdef FIX_CLASS
+// clang-format off
+FixStyle(tdem/grate,FixTDEMGrate);
+// clang-format on
+#else
+
+#ifndef TDEM_LMP_FIX_TDEM_GRATE_H
+#define TDEM_LMP_FIX_TDEM_GRATE_H
+
+#include "fix.h"
+#include "fixes/grate/geometry.h"
+#include "tdem_lammps_law.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class FixTDEMGrate : public Fix {
+ public:
+  FixTDEMGrate(class LAMMPS *, int, char **);
+  ~FixTDEMGrate() override;
+  int setmask() override;
+  void init() override;
+  void setup(int) override;
+  void post_force(int) override;
+  void post_force_respa(int, int, int) override;
+  double compute_vector(int) override;
+  void *extract(const char *, int &) override;
+  double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  void set_arrays(int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  void write_restart(FILE *) override;
+  void restart(char *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  void reset_dt() override;
+
+  template <int M, int E, int S, int TL> void eval();
+
+  // read-only views for other tdem styles
+  const tdem_lammps::LawCoeffs &grate_law() const { return law; }
+  const tdem::grate::Grate &grate() const { return *grate_; }
+  double grate_time() const { return t_last; }
+
+ protected:
+  std::string where;
+  tdem_lammps::LawCoeffs law;
+  std::unique_ptr<tdem::grate::Grate> grate_;
+  std::vector<tdem::grate::Box> boxes_;
+  std::vector<double> box_extent;  // half extents of the axis-aligned bounding box of each box
+  int per_axis;                   // periodic width axis (minimum image), or -1
+  double per_len;
+
+  // grate time t = t_base + (ntimestep - step_base) * dt_cur
+  double t_base;
+  bigint step_base;
+  double dt_cur;
+  double t_last;
+  double current_time() const;
+  void rebase_time();
+
+  int max_contacts;   // K history slots per atom
+  int size_history;   // the law's history values per contact
+  int slot_size;      // 1 + size_history (box index, history)
+  int width;          // K * slot_size values per atom
+  double **slots;     // per atom: K x (box index or -1, history)
+
+  int vtk_every;
+  std::string vtk_prefix;
+  void write_vtk(double t);
+
+  int nlevels_respa;
+  int ngroups;
+  double fbar[3], fbar_all[3];  // force of the particles on the boxes (this rank / all ranks)
+  int force_flag;
+  std::vector<int> extlist_store;
+
+  class Fix *fix_rigid;
+  double *mass_rigid;
+  int nmax_rigid;
+  bigint ndeep;  // evaluations with the sphere centre inside a box (reported once)
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,430 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: mixing measures of a particle bed on a grate (physics_reference.md 7.2, docs/grate.md),
+// on plain arrays, host-independent. Positions x and velocities v are n x 3 doubles, interleaved
+// (x[3 i + k]); radii r are n doubles.
+//
+// Velocity-based (7.2.1), evaluation radius r_v:
+//   N_i   = { j : |x_j - x_i| <= r_v }        (includes i itself; minimum image on periodic axes)
+//   vbar_i = (1/|N_i|) sum_{j in N_i} v_j,    vtil_i = v_i - vbar_i
+//   p_k   = standard deviation (population, 1/N) of vtil_{i,k} over the particles i of a region
+//           (and, when snapshots are accumulated, over time),   P' = sqrt(p_x^2 + p_y^2 + p_z^2).
+//   All particles count as neighbours; an optional mask selects the particles that are evaluated
+//   (e.g. to leave out the ones touching the moving bars).
+// Trajectory-based (7.2.2), column width c:
+//   s_i = highest particle centre (up coordinate) among the particles j whose horizontal offset from
+//         i is within the column, |dx_transport| <= c/2 (and |dx_lateral| <= c/2 in 3D) - includes i,
+//   b_i = grate_height(x_i) + r_i, the centre height of a particle of radius r_i resting on the grate,
+//   D_i = (s_i - z_i)/(s_i - b_i) clipped to [0, 1] (normalised: surface 0, grate 1), or
+//   D_i = s_i - z_i [m] (normalise = false). A one-layer column (s_i - b_i <= 0) gives D = 0.
+//   Along the trajectory of each particle (snapshots at times t_k, by particle id):
+//   Dbar = mean of the samples, Dtil(t) = D(t) - Dbar, sigma_D = rms of Dtil,
+//   Q' = <|dDtil/dt|>_t = sum_k |D_{k+1} - D_k| / sum_k (t_{k+1} - t_k) (finite-difference time average;
+//   only consecutive snapshots in which the particle is present count). Per region, an increment
+//   belongs to the region of the particle at the earlier snapshot, and Q'_region = sum |dD| / sum dt
+//   over all increments of the region.
+// Regions: `count` equal bins of the transport coordinate (axis) between lo and hi; particles outside
+// belong to no region.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "fixes/grate/kinematics.h"  // bad_value
+
+namespace tdem {
+namespace grate {
+namespace mixing {
+
+struct Periodic {
+  bool on[3] = {false, false, false};
+  double lo[3] = {0.0, 0.0, 0.0};
+  double hi[3] = {0.0, 0.0, 0.0};
+};
+
+// Uniform cell list over the axes with use[k] = true (other axes: one cell). The cells are at least
+// `cell` wide, so all points within `cell` (per axis) of a query point lie in the 3^d neighbouring cells.
+class CellList {
+ public:
+  CellList(std::size_t n, const double* x, double cell, const bool use[3], const Periodic& per) : x_(x), per_(per) {
+    if (!(cell > 0.0) || !std::isfinite(cell)) bad_value("mixing cell list", "radius", cell, "(0, inf)");
+    long total = 1;
+    for (int k = 0; k < 3; ++k) {
+      use_[k] = use[k];
+      if (!use[k]) {
+        nc_[k] = 1;
+        lo_[k] = 0.0;
+        size_[k] = 1.0;
+        continue;
+      }
+      if (per.on[k]) {
+        lo_[k] = per.lo[k];
+        len_[k] = per.hi[k] - per.lo[k];
+        if (!(len_[k] > 0.0)) bad_value("mixing cell list", "periodic length", len_[k], "(0, inf)");
+      } else {
+        double a = std::numeric_limits<double>::infinity(), b = -a;
+        for (std::size_t i = 0; i < n; ++i) {
+          a = std::min(a, x[3 * i + k]);
+          b = std::max(b, x[3 * i + k]);
+        }
+        if (n == 0) a = b = 0.0;
+        lo_[k] = a;
+        len_[k] = b - a;
+      }
+      nc_[k] = std::max(1L, static_cast<long>(std::floor(len_[k] / cell)));
+      total *= nc_[k];
+    }
+    // keep the grid at most a few cells per particle (sparse beds in a large domain)
+    const long cap = 4 * static_cast<long>(n) + 64;
+    while (total > cap) {
+      total = 1;
+      for (int k = 0; k < 3; ++k) {
+        if (use_[k]) nc_[k] = std::max(1L, nc_[k] / 2);
+        total *= nc_[k];
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      if (use_[k]) size_[k] = len_[k] > 0.0 ? len_[k] / nc_[k] : 1.0;
+    start_.assign(total + 1, 0);
+    cell_of_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      cell_of_[i] = cell_index(x + 3 * i);
+      ++start_[cell_of_[i] + 1];
+    }
+    for (long c = 0; c < total; ++c) start_[c + 1] += start_[c];
+    items_.resize(n);
+    std::vector<long> fill(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < n; ++i) items_[fill[cell_of_[i]]++] = i;
+  }
+
+  // f(j, d) for every candidate j, d = x_j - p (minimum image on periodic axes).
+  template <class F>
+  void for_each_candidate(const double* p, F&& f) const {
+    long cells[3][3];
+    int ncand[3];
+    for (int k = 0; k < 3; ++k) {
+      const long c = axis_cell(p[k], k);
+      ncand[k] = 0;
+      if (!use_[k]) {
+        cells[k][ncand[k]++] = 0;
+      } else if (per_.on[k]) {
+        if (nc_[k] <= 3) {
+          for (long q = 0; q < nc_[k]; ++q) cells[k][ncand[k]++] = q;
+        } else {
+          for (long q = -1; q <= 1; ++q) cells[k][ncand[k]++] = ((c + q) % nc_[k] + nc_[k]) % nc_[k];
+        }
+      } else {
+        for (long q = std::max(0L, c - 1); q <= std::min(nc_[k] - 1, c + 1); ++q) cells[k][ncand[k]++] = q;
+      }
+    }
+    double d[3];
+    for (int a = 0; a < ncand[0]; ++a)
+      for (int b = 0; b < ncand[1]; ++b)
+        for (int c = 0; c < ncand[2]; ++c) {
+          const long cell = (cells[0][a] * nc_[1] + cells[1][b]) * nc_[2] + cells[2][c];
+          for (long q = start_[cell]; q < start_[cell + 1]; ++q) {
+            const std::size_t j = items_[q];
+            for (int k = 0; k < 3; ++k) {
+              d[k] = x_[3 * j + k] - p[k];
+              if (per_.on[k]) d[k] -= len_[k] * std::round(d[k] / len_[k]);
+            }
+            f(j, d);
+          }
+        }
+  }
+
+ private:
+  long axis_cell(double v, int k) const {
+    if (!use_[k]) return 0;
+    long c = static_cast<long>(std::floor((v - lo_[k]) / size_[k]));
+    if (per_.on[k]) return ((c % nc_[k]) + nc_[k]) % nc_[k];
+    return std::max(0L, std::min(nc_[k] - 1, c));
+  }
+  long cell_index(const double* p) const {
+    return (axis_cell(p[0], 0) * nc_[1] + axis_cell(p[1], 1)) * nc_[2] + axis_cell(p[2], 2);
+  }
+
+  const double* x_;
+  Periodic per_;
+  bool use_[3] = {true, true, true};
+  long nc_[3] = {1, 1, 1};
+  double lo_[3] = {0, 0, 0}, len_[3] = {0, 0, 0}, size_[3] = {1, 1, 1};
+  std::vector<long> start_, cell_of_;
+  std::vector<std::size_t> items_;
+};
+
+inline void check_periodic(const Periodic& per, double r, const char* what) {
+  for (int k = 0; k < 3; ++k)
+    if (per.on[k] && !(per.hi[k] - per.lo[k] >= 2.0 * r))
+      bad_value("mixing", std::string("periodic length of axis ") + "xyz"[k] + " (must be >= 2 " + what + ")",
+                per.hi[k] - per.lo[k], "[2 " + std::string(what) + ", inf)");
+}
+
+// Equal bins of one coordinate (the transport direction) = regions along the grate.
+struct Bins {
+  int axis = 0;
+  double lo = 0.0, hi = 1.0;
+  int count = 1;
+  void validate() const {
+    if (axis < 0 || axis > 2) bad_value("mixing regions", "axis", axis, "{0, 1, 2}");
+    if (count < 1) bad_value("mixing regions", "count", count, "[1, inf)");
+    if (!(hi > lo)) bad_value("mixing regions", "hi - lo", hi - lo, "(0, inf)");
+  }
+  int index(const double* p) const {
+    const double f = (p[axis] - lo) / (hi - lo);
+    if (!(f >= 0.0 && f <= 1.0)) return -1;
+    return std::min(count - 1, static_cast<int>(f * count));
+  }
+};
+
+// ---------------------------------------------------------------- velocity based
+struct LocalVelocity {
+  std::vector<double> mean;   // vbar, n x 3
+  std::vector<double> fluct;  // vtil = v - vbar, n x 3
+  std::vector<int> neighbours;  // |N_i| (>= 1)
+};
+
+inline LocalVelocity local_velocity(std::size_t n, const double* x, const double* v, double r_v,
+                                    const Periodic& per = Periodic{}) {
+  if (!(r_v > 0.0) || !std::isfinite(r_v)) bad_value("mixing", "radius (evaluation radius r_v)", r_v, "(0, inf)");
+  check_periodic(per, r_v, "r_v");
+  const bool use[3] = {true, true, true};
+  CellList cl(n, x, r_v, use, per);
+  LocalVelocity out;
+  out.mean.assign(3 * n, 0.0);
+  out.fluct.assign(3 * n, 0.0);
+  out.neighbours.assign(n, 0);
+  const double r2 = r_v * r_v;
+  for (std::size_t i = 0; i < n; ++i) {
+    double s[3] = {0.0, 0.0, 0.0};
+    int cnt = 0;
+    cl.for_each_candidate(x + 3 * i, [&](std::size_t j, const double* d) {
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= r2) {
+        for (int k = 0; k < 3; ++k) s[k] += v[3 * j + k];
+        ++cnt;
+      }
+    });
+    out.neighbours[i] = cnt;
+    for (int k = 0; k < 3; ++k) {
+      out.mean[3 * i + k] = s[k] / cnt;
+      out.fluct[3 * i + k] = v[3 * i + k] - out.mean[3 * i + k];
+    }
+  }
+  return out;
+}
+
+// Running sums of the fluctuations of one region; merge() adds snapshots or processors.
+struct VelocityStats {
+  long n = 0;
+  double sum[3] = {0.0, 0.0, 0.0};
+  double sumsq[3] = {0.0, 0.0, 0.0};
+  void add(const double* vt) {
+    ++n;
+    for (int k = 0; k < 3; ++k) {
+      sum[k] += vt[k];
+      sumsq[k] += vt[k] * vt[k];
+    }
+  }
+  void merge(const VelocityStats& o) {
+    n += o.n;
+    for (int k = 0; k < 3; ++k) {
+      sum[k] += o.sum[k];
+      sumsq[k] += o.sumsq[k];
+    }
+  }
+  // p_k: population standard deviation of vtil_k; 0 for an empty region
+  double p(int k) const {
+    if (n == 0) return 0.0;
+    const double m = sum[k] / n;
+    return std::sqrt(std::max(0.0, sumsq[k] / n - m * m));
+  }
+  double P() const { return std::sqrt(p(0) * p(0) + p(1) * p(1) + p(2) * p(2)); }
+};
+
+// One snapshot: per-region statistics of vtil. include[i] == 0 leaves particle i out of the
+// statistics (it still counts as a neighbour); nullptr = all. field (optional) receives vbar, vtil.
+inline std::vector<VelocityStats> velocity_mixing(std::size_t n, const double* x, const double* v, double r_v,
+                                                  const Bins& bins, const Periodic& per = Periodic{},
+                                                  const unsigned char* include = nullptr,
+                                                  LocalVelocity* field = nullptr) {
+  bins.validate();
+  LocalVelocity lv = local_velocity(n, x, v, r_v, per);
+  std::vector<VelocityStats> out(bins.count);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (include && !include[i]) continue;
+    const int r = bins.index(x + 3 * i);
+    if (r >= 0) out[r].add(&lv.fluct[3 * i]);
+  }
+  if (field) *field = std::move(lv);
+  return out;
+}
+
+// ---------------------------------------------------------------- trajectory based
+struct DepthOptions {
+  int transport_axis = 0;
+  int up_axis = 2;
+  int lateral_axis = 1;        // -1: 2D, the column is a strip |dx_transport| <= c/2
+  double column_width = 0.0;   // c [m], > 0 (a few particle diameters)
+  bool normalise = true;
+  Periodic periodic;           // periodic transport/lateral axes (minimum image)
+  // height of the grate surface (up coordinate) under the point (transport, lateral); required
+  std::function<double(double transport, double lateral)> grate_height;
+};
+
+struct Depths {
+  std::vector<double> depth;    // D (normalised) or depth [m]
+  std::vector<double> surface;  // s_i
+  std::vector<double> bottom;   // b_i
+};
+
+inline Depths particle_depths(std::size_t n, const double* x, const double* radius, const DepthOptions& o) {
+  const std::string c = "mixing depth";
+  for (int a : {o.transport_axis, o.up_axis})
+    if (a < 0 || a > 2) bad_value(c, "axis", a, "{0, 1, 2}");
+  if (o.lateral_axis < -1 || o.lateral_axis > 2) bad_value(c, "lateral axis", o.lateral_axis, "{-1 (2D), 0, 1, 2}");
+  if (o.transport_axis == o.up_axis || o.lateral_axis == o.up_axis || o.lateral_axis == o.transport_axis)
+    throw std::invalid_argument("mixing depth: transport, lateral and up axes must differ");
+  if (!(o.column_width > 0.0) || !std::isfinite(o.column_width))
+    bad_value(c, "column (column width)", o.column_width, "(0, inf)");
+  if (!o.grate_height) throw std::invalid_argument("mixing depth: no grate height function given");
+  check_periodic(o.periodic, 0.5 * o.column_width, "c/2");
+  bool use[3] = {false, false, false};
+  use[o.transport_axis] = true;
+  if (o.lateral_axis >= 0) use[o.lateral_axis] = true;
+  Periodic per = o.periodic;
+  per.on[o.up_axis] = false;
+  const double h = 0.5 * o.column_width;
+  CellList cl(n, x, h, use, per);
+  Depths out;
+  out.depth.resize(n);
+  out.surface.resize(n);
+  out.bottom.resize(n);
+  const int t = o.transport_axis, u = o.up_axis, l = o.lateral_axis;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* p = x + 3 * i;
+    double s = p[u];
+    cl.for_each_candidate(p, [&](std::size_t j, const double* d) {
+      if (std::fabs(d[t]) <= h && (l < 0 || std::fabs(d[l]) <= h)) s = std::max(s, x[3 * j + u]);
+    });
+    const double b = o.grate_height(p[t], l >= 0 ? p[l] : 0.0) + radius[i];
+    out.surface[i] = s;
+    out.bottom[i] = b;
+    const double depth = s - p[u];
+    if (!o.normalise) {
+      out.depth[i] = depth;
+    } else {
+      const double bed = s - b;
+      out.depth[i] = bed > 0.0 ? std::max(0.0, std::min(1.0, depth / bed)) : 0.0;
+    }
+  }
+  return out;
+}
+
+// Accumulates depth trajectories over snapshots (by particle id) and per region.
+class DepthTrajectories {
+ public:
+  struct Particle {
+    long samples = 0;
+    double sum_d = 0.0, sum_d2 = 0.0;    // sums of the samples D and D^2
+    double total_abs = 0.0, total_dt = 0.0;  // sum |dD|, sum dt over consecutive snapshots
+    double last_t = 0.0, last_d = 0.0;
+    int last_region = -1;
+    long last_snapshot = -2;
+    double mean() const { return samples ? sum_d / samples : 0.0; }
+    double sigma() const {  // rms of Dtil = D - Dbar
+      if (!samples) return 0.0;
+      const double m = mean();
+      return std::sqrt(std::max(0.0, sum_d2 / samples - m * m));
+    }
+    double q() const { return total_dt > 0.0 ? total_abs / total_dt : 0.0; }  // Q'
+  };
+  struct Region {
+    double total_abs = 0.0, total_dt = 0.0;  // increments starting in this region
+    long samples = 0;
+    double sum_d = 0.0, sum_d2 = 0.0;        // the D samples taken in this region
+    double q() const { return total_dt > 0.0 ? total_abs / total_dt : 0.0; }
+    double mean() const { return samples ? sum_d / samples : 0.0; }
+    double sigma() const {
+      if (!samples) return 0.0;
+      const double m = mean();
+      return std::sqrt(std::max(0.0, sum_d2 / samples - m * m));
+    }
+  };
+
+  explicit DepthTrajectories(const Bins& bins) : bins_(bins), regions_(bins.count) { bins.validate(); }
+
+  // One snapshot at time t: ids, depths D, positions (for the region; may be nullptr = no region).
+  void add(double t, std::size_t n, const long* id, const double* depth, const double* x) {
+    if (snapshot_ >= 0 && !(t > last_t_))
+      bad_value("mixing trajectories", "time of snapshot", t, "(" + std::to_string(last_t_) + ", inf)");
+    ++snapshot_;
+    for (std::size_t i = 0; i < n; ++i) {
+      Particle& p = particles_[id[i]];
+      const int r = x ? bins_.index(x + 3 * i) : -1;
+      const double d = depth[i];
+      if (p.last_snapshot == snapshot_ - 1) {
+        const double a = std::fabs(d - p.last_d), dt = t - p.last_t;
+        p.total_abs += a;
+        p.total_dt += dt;
+        if (p.last_region >= 0) {
+          regions_[p.last_region].total_abs += a;
+          regions_[p.last_region].total_dt += dt;
+        }
+      }
+      ++p.samples;
+      p.sum_d += d;
+      p.sum_d2 += d * d;
+      if (r >= 0) {
+        ++regions_[r].samples;
+        regions_[r].sum_d += d;
+        regions_[r].sum_d2 += d * d;
+      }
+      p.last_t = t;
+      p.last_d = d;
+      p.last_region = r;
+      p.last_snapshot = snapshot_;
+    }
+    last_t_ = t;
+  }
+
+  // Start a new averaging window: clears all sums, keeps the last sample of every particle so the
+  // next snapshot still gives increments (time series of Q').
+  void reset_sums() {
+    for (auto& kv : particles_) {
+      Particle& p = kv.second;
+      p.samples = 0;
+      p.sum_d = p.sum_d2 = p.total_abs = p.total_dt = 0.0;
+    }
+    for (Region& r : regions_) r = Region{};
+  }
+
+  const std::unordered_map<long, Particle>& particles() const { return particles_; }
+  const Particle& particle(long id) const { return particles_.at(id); }
+  const std::vector<Region>& regions() const { return regions_; }
+  // Q' over all particles: sum |dD| / sum dt of all increments
+  double q_all() const {
+    double a = 0.0, dt = 0.0;
+    for (const auto& kv : particles_) {
+      a += kv.second.total_abs;
+      dt += kv.second.total_dt;
+    }
+    return dt > 0.0 ? a / dt : 0.0;
+  }
+
+ private:
+  Bins bins_;
+  std::vector<Region> regions_;
+  std::unordered_map<long, Particle> particles_;
+  long snapshot_ = -1;
+  double last_t_ = 0.0;
+};
+
+}  // namespace mixing
+}  // namespace grate
+}  // namespace tdem

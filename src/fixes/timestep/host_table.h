@@ -1,0 +1,314 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: the host-independent part of fix tdem/timestep (LAMMPS: src/fixes/timestep/lammps, LIGGGHTS:
+// src/fixes/timestep/liggghts): one row per type pair (or wall and type) with the law in use, the
+// run-start table, the run-time re-check from the largest particle speed and the largest overlap,
+// and the keyword parser of the fix. The hosts only find the laws, the particles and the step.
+//
+//   fix ID group tdem/timestep [vmax V] [check off|warn|stop] [every N] [fraction F] [scheme NAME]
+//
+// Each row holds two functions made by the host from the law's parameters:
+//   advise(in)        the core's advice (advice::for_linear, for_hertz, ...) for the pair's m*, R*
+//                     at the impact velocity in.v_max (src/fixes/timestep/timestep.h)
+//   stiffness(xi, k, c) the tangent stiffness dF/dxi and damping dF/dxi' of the law at overlap xi
+//                     (false: the law's stiffness does not depend on the overlap, or not known)
+// See docs/timestep.md, "fix tdem/timestep".
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "fixes/timestep/timestep.h"
+
+namespace tdem {
+namespace advice {
+namespace host {
+
+enum class CheckMode { off, warn, stop };
+
+inline const char* to_string(CheckMode m) {
+  return m == CheckMode::off ? "off" : m == CheckMode::warn ? "warn" : "stop";
+}
+
+// Keywords of the fix (after "fix ID group tdem/timestep").
+struct Options {
+  double vmax = 0.0;  // 0: not given (2 x the largest particle speed at set-up)
+  bool vmax_given = false;
+  CheckMode check = CheckMode::warn;
+  long every = 1000;     // run-time check every N steps (0: off)
+  double fraction = 0.5; // warn above this fraction of dt_c (Policy::warn_fraction)
+  bool scheme_given = false;
+  integrators::Scheme scheme = integrators::Scheme::velocity_verlet;
+};
+
+// Parse the keywords; a bad one throws std::invalid_argument with a message naming the
+// keyword, the value and the allowed values.
+inline Options parse_options(int narg, char** arg, int iarg) {
+  Options o;
+  auto value = [&](int i, const char* kw) -> std::string {
+    if (i + 1 >= narg)
+      throw std::invalid_argument(std::string("keyword '") + kw + "' needs a value");
+    return arg[i + 1];
+  };
+  auto real = [&](const std::string& s, const char* kw, const char* allowed) {
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (s.empty() || *end != '\0' || !std::isfinite(v))
+      throw std::invalid_argument(std::string("keyword '") + kw + "' value '" + s +
+                                  "' is not a number; allowed: " + allowed);
+    return v;
+  };
+  for (int i = iarg; i < narg; i += 2) {
+    const std::string kw = arg[i];
+    if (kw == "vmax") {
+      const std::string s = value(i, "vmax");
+      o.vmax = real(s, "vmax", "a velocity > 0");
+      if (!(o.vmax > 0.0))
+        throw std::invalid_argument("keyword 'vmax' value " + s + " is outside the allowed range (0, inf)");
+      o.vmax_given = true;
+    } else if (kw == "check") {
+      const std::string s = value(i, "check");
+      if (s == "off") o.check = CheckMode::off;
+      else if (s == "warn") o.check = CheckMode::warn;
+      else if (s == "stop") o.check = CheckMode::stop;
+      else throw std::invalid_argument("keyword 'check' value '" + s + "' is not one of off|warn|stop");
+    } else if (kw == "every") {
+      const std::string s = value(i, "every");
+      char* end = nullptr;
+      const long n = std::strtol(s.c_str(), &end, 10);
+      if (s.empty() || *end != '\0' || n < 0)
+        throw std::invalid_argument("keyword 'every' value '" + s +
+                                    "' is not allowed; allowed: an integer >= 0 (0: no run-time check)");
+      o.every = n;
+    } else if (kw == "fraction") {
+      const std::string s = value(i, "fraction");
+      o.fraction = real(s, "fraction", "a number in (0, 1]");
+      if (!(o.fraction > 0.0 && o.fraction <= 1.0))
+        throw std::invalid_argument("keyword 'fraction' value " + s +
+                                    " is outside the allowed range (0, 1] (warn above this fraction of dt_c)");
+    } else if (kw == "scheme") {
+      const std::string s = value(i, "scheme");
+      if (!integrators::parse_scheme(s, o.scheme))
+        throw std::invalid_argument("keyword 'scheme' value '" + s + "' is not one of " +
+                                    integrators::scheme_names("|"));
+      o.scheme_given = true;
+    } else {
+      throw std::invalid_argument("unknown keyword '" + kw +
+                                  "'; allowed: vmax V, check off|warn|stop, every N, fraction F, scheme NAME");
+    }
+  }
+  return o;
+}
+
+inline Policy policy_of(const Options& o) {
+  Policy p;
+  p.warn_fraction = o.fraction;
+  return p;
+}
+
+struct Row {
+  std::string what;  // "pair 1 2", "wall w1 type 1"
+  std::string law;   // law name as the host calls it
+  bool supported = true;
+  int itype = 0, jtype = 0;  // types (jtype = 0: a wall)
+  double meff = 0.0, reff = 0.0;
+  Material material{};  // radius 0: not known
+  std::function<Advice(const Input&)> advise;
+  std::function<bool(double xi, double& k, double& c)> stiffness;
+  Advice a;              // the set-up advice
+  bool advised = false;  // a holds a result
+  std::string error;     // why the advice failed
+  bool warned = false;   // a warning was issued for this row in this run
+  // run-time cache: the advice at the approach velocity cache_v (recomputed when v moves by > 1 %;
+  // a damped Hertz-type law integrates its contact time, ~ms)
+  double cache_v = -1.0;
+  Advice cache_a;
+  bool cache_ok = false;
+};
+
+inline std::string num(double v) {
+  if (std::isnan(v)) return "-";
+  char b[40];
+  std::snprintf(b, sizeof b, "%.9g", v);
+  return b;
+}
+
+inline std::string squeeze(std::string s) {
+  for (char& ch : s)
+    if (ch == ' ') ch = '_';
+  return s;
+}
+
+// The set-up advice of every row.
+inline void advise_rows(std::vector<Row>& rows, double v_max, integrators::Scheme s, double dt) {
+  for (Row& r : rows) {
+    r.advised = false;
+    r.warned = false;
+    r.error.clear();
+    if (!r.supported || !r.advise) continue;
+    Input in;
+    in.meff = r.meff;
+    in.reff = r.reff;
+    in.v_max = v_max;
+    in.scheme = s;
+    in.dt = dt;
+    in.material = r.material;
+    try {
+      r.a = r.advise(in);
+      r.advised = true;
+    } catch (const std::exception& e) {
+      r.error = e.what();
+    }
+  }
+}
+
+// The run-start table (one line per row, whitespace separated; '-' where not known).
+inline std::string table(const std::vector<Row>& rows, const std::string& head, const Policy& pol = Policy()) {
+  std::string s = head + "\n";
+  char b[512];
+  std::snprintf(b, sizeof b, "%-18s %-34s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s\n",
+                "#what", "law", "m*", "R*", "k_max", "zeta", "dt_critical", "T_Rayleigh", "t_contact",
+                "steps/contact", "dt/dt_c", "dt_advised", "verdict");
+  s += b;
+  for (const Row& r : rows) {
+    if (!r.advised) {
+      s += squeeze(r.what) + "  " + squeeze(r.law) + "  not advised: " + (r.supported ? r.error : "unsupported law") + "\n";
+      continue;
+    }
+    const Advice& a = r.a;
+    const std::string verdict = a.dt > 0.0 ? to_string(check(a, a.dt, pol).verdict) : "-";
+    std::snprintf(b, sizeof b, "%-18s %-34s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s %-15s\n",
+                  squeeze(r.what).c_str(), squeeze(a.law).c_str(), num(a.meff).c_str(), num(a.reff).c_str(),
+                  num(a.stiffness).c_str(), num(a.damping_ratio).c_str(), num(a.dt_critical).c_str(),
+                  num(a.rayleigh_time).c_str(), num(a.contact_time).c_str(), num(a.steps_per_contact).c_str(),
+                  num(a.fraction_of_critical).c_str(), num(a.dt_advised).c_str(), verdict.c_str());
+    s += b;
+  }
+  return s;
+}
+
+// The run-time state: the advice at the largest approach velocity and overlap seen now.
+struct Now {
+  double dt_critical = INFINITY;
+  double steps_per_contact = INFINITY;
+  double fraction = 0.0;
+  int worst = -1;  // row of the smallest dt_c
+  Verdict verdict = Verdict::ok;
+  std::string message;
+};
+
+// Re-check every row: v_pair = the bound on the approach velocity of a particle pair (2 x the
+// largest speed), v_wall = of a particle and a wall (the largest speed), xi(row) = the largest
+// overlap of the row's contacts now (0: none). Per row, the advice at that velocity (the core's
+// law function) and the linearisation at that overlap (from_stiffness) - the smaller dt_c counts.
+inline Now recheck(std::vector<Row>& rows, double v_pair, double v_wall, const std::function<double(const Row&)>& xi,
+                   integrators::Scheme s, double dt, const Policy& pol) {
+  Now now;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    Row& r = rows[i];
+    if (!r.advised) continue;
+    const double v = r.jtype ? v_pair : v_wall;
+    Input in;
+    in.meff = r.meff;
+    in.reff = r.reff;
+    in.scheme = s;
+    in.dt = dt;
+    in.material = r.material;
+    Advice best;
+    bool have = false;
+    if (v > 0.0) {
+      in.v_max = v;
+      if (!(r.cache_v > 0.0 && std::fabs(v - r.cache_v) <= 0.01 * r.cache_v)) {
+        r.cache_v = v;
+        try {
+          r.cache_a = r.advise(in);
+          r.cache_ok = true;
+        } catch (const std::exception&) {
+          r.cache_ok = false;
+        }
+      }
+      if (r.cache_ok) {
+        best = r.cache_a;
+        set_step(best, dt);
+        have = true;
+      }
+    }
+    const double x = xi(r);
+    double k = 0.0, c = 0.0;
+    if (x > 0.0 && r.stiffness && r.stiffness(x, k, c) && k > 0.0) {
+      in.v_max = v > 0.0 ? v : r.a.v_max;
+      try {
+        Advice f = from_stiffness(k, c, in);
+        f.law = r.a.law + " at overlap " + num(x) + " m";
+        if (!have || f.dt_critical < best.dt_critical) {
+          if (have && std::isfinite(best.contact_time)) {
+            f.contact_time = best.contact_time;  // the law's own contact time at v
+            f.contact_time_source = best.contact_time_source;
+            set_step(f, dt);
+          }
+          best = f;
+        }
+        have = true;
+      } catch (const std::exception&) {
+      }
+    }
+    if (!have) continue;
+    if (best.dt_critical < now.dt_critical) {
+      now.dt_critical = best.dt_critical;
+      now.worst = static_cast<int>(i);
+    }
+    now.steps_per_contact = std::min(now.steps_per_contact, best.steps_per_contact);
+    const Check c2 = check(best, dt, pol);
+    if (static_cast<int>(c2.verdict) > static_cast<int>(now.verdict) ||
+        (now.message.empty() && c2.verdict != Verdict::ok)) {
+      now.verdict = c2.verdict;
+      now.message = r.what + ": " + c2.message;
+    }
+  }
+  now.fraction = std::isfinite(now.dt_critical) && now.dt_critical > 0.0 ? dt / now.dt_critical : 0.0;
+  if (now.dt_critical == 0.0) now.fraction = INFINITY;
+  return now;
+}
+
+// ---------------------------------------------------------------- run-time scans (both engines)
+// The largest squared speed of the local atoms of the group (reduce with MPI_MAX, then sqrt).
+inline double local_largest_speed2(double* const* v, const int* mask, int nlocal, int groupbit) {
+  double v2 = 0.0;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) v2 = std::max(v2, v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
+  return v2;
+}
+
+// The largest overlap per type pair (index a * (ntypes + 1) + b, a <= b) among the pairs of a
+// half or full neighbour list (LAMMPS/LIGGGHTS NeighList) whose atoms are both in the group; loc has
+// (ntypes + 1)^2 entries, reduce with MPI_MAX.
+template <class List>
+void local_largest_overlaps(const List* list, double* const* x, const double* rad, const int* type,
+                            const int* mask, int groupbit, int ntypes, int neighmask, std::vector<double>& loc) {
+  loc.assign(static_cast<std::size_t>((ntypes + 1) * (ntypes + 1)), 0.0);
+  if (!list || list->inum <= 0 || !list->ilist) return;
+  for (int ii = 0; ii < list->inum; ii++) {
+    const int i = list->ilist[ii];
+    if (!(mask[i] & groupbit)) continue;
+    const int* jl = list->firstneigh[i];
+    for (int jj = 0; jj < list->numneigh[i]; jj++) {
+      const int j = jl[jj] & neighmask;
+      if (!(mask[j] & groupbit)) continue;
+      const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+      const double ov = rad[i] + rad[j] - std::sqrt(dx * dx + dy * dy + dz * dz);
+      if (ov <= 0.0) continue;
+      const int a = std::min(type[i], type[j]), b = std::max(type[i], type[j]);
+      double& m = loc[static_cast<std::size_t>(a * (ntypes + 1) + b)];
+      m = std::max(m, ov);
+    }
+  }
+}
+
+}  // namespace host
+}  // namespace advice
+}  // namespace tdem

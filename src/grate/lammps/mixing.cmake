@@ -1,7 +1,0 @@
-# SPDX-License-Identifier: GPL-2.0-or-later
-# tdem LAMMPS module 'mixing': sources of its styles (included by src/pair_styles/lammps/CMakeLists.txt)
-list(APPEND TDEM_LAMMPS_STYLE_SOURCES
-     ${CMAKE_CURRENT_LIST_DIR}/mixing_styles.cpp
-     ${CMAKE_CURRENT_LIST_DIR}/compute_tdem_mixing_velocity.cpp
-     ${CMAKE_CURRENT_LIST_DIR}/fix_tdem_mixing_depth.cpp)
-list(APPEND TDEM_LAMMPS_MODULE_INCLUDES ${CMAKE_CURRENT_LIST_DIR} ${CMAKE_CURRENT_LIST_DIR}/../..)

@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: the multiple-contact correction of fix tdem/clump as seen by the tdem pair and
+// wall styles (pair tdem/gran, fix tdem/wall/gran). Header-only, reached through Fix::extract, so
+// the pair and wall styles build (and run, without correction) when the clump module is off.
+//
+//   find_clump_correction   the clump fix and its correction (none when there is no clump fix)
+//   ClumpView               per-step pointers: body index per atom, body mass, com, inverse
+//                           inertia (space frame); inverse local mass of one side
+// The global contact counts and overlap sums come from clumps/contact_tally_mpi.h
+// (merge_over_ranks; exact fixed-point sums, independent of the rank split).
+#pragma once
+
+#include "contact/multi_contact/contact_tally.h"
+#include "contact/multi_contact/contact_tally_mpi.h"
+#include "contact/multi_contact/multi_contact.h"
+
+#include "domain.h"
+#include "lammps_compat.h"
+#include "lammps.h"
+#include "error.h"
+#include "fix.h"
+#include "modify.h"
+
+#include <cstdint>
+#include <cstring>
+#include <mpi.h>
+#include <string>
+#include <vector>
+
+namespace tdem_lammps {
+
+// The fix tdem/clump of the run and its correction (Correction::none: no clump fix, or no
+// correction). Errors when several clump fixes exist and one has a correction (their body
+// indices would collide).
+inline LAMMPS_NS::Fix *find_clump_correction(LAMMPS_NS::LAMMPS *lmp, const std::string &where, int &mode) {
+  mode = (int) tdem::clumps::Correction::none;
+  LAMMPS_NS::Fix *found = nullptr;
+  int nclump = 0;
+  for (int i = 0; i < lmp->modify->nfix; i++) {
+    LAMMPS_NS::Fix *f = lmp->modify->fix[i];
+    if (std::strcmp(f->style, "tdem/clump") != 0) continue;
+    nclump++;
+    int dim = 0;
+    const int *c = (const int *) f->extract("tdem_clump_correction", dim);
+    const int m = c ? *c : 0;
+    if (m != (int) tdem::clumps::Correction::none) {
+      if (found)
+        lmp->error->all(FLERR, where + ": several fix tdem/clump with a multiple-contact correction; allowed: "
+                                       "one fix tdem/clump when 'correction' is not none");
+      found = f;
+      mode = m;
+    }
+  }
+  if (found && nclump > 1)
+    lmp->error->all(FLERR, where + ": fix " + std::string(found->id) + " has correction " +
+                               tdem::clumps::to_string((tdem::clumps::Correction) mode) +
+                               ", which needs it to be the only fix tdem/clump (found " + std::to_string(nclump) + ")");
+  return found;
+}
+
+// Per-step view of the clump fix's body data.
+struct ClumpView {
+  const int *body = nullptr;       // per atom (owned and ghost): body index or -1
+  const double *mass = nullptr;    // per body
+  const double *com = nullptr;     // 3 per body (local_mass)
+  const double *inv_i = nullptr;   // 9 per body (local_mass)
+
+  void fetch(LAMMPS_NS::Fix *f, bool local_mass) {
+    int dim = 0;
+    body = (const int *) f->extract("tdem_clump_body", dim);
+    mass = (const double *) f->extract("masstotal", dim);
+    com = local_mass ? (const double *) f->extract("tdem_clump_com", dim) : nullptr;
+    inv_i = local_mass ? (const double *) f->extract("tdem_clump_inv_inertia", dim) : nullptr;
+  }
+
+  // 1/M + (r x n).I^-1 (r x n) of body b, r = contact point - com (minimum image), n unit normal
+  double inverse_local_mass(LAMMPS_NS::Domain *domain, int b, const double *xc, const double *n) const {
+    double r[3] = {xc[0] - com[3 * b], xc[1] - com[3 * b + 1], xc[2] - com[3 * b + 2]};
+    tdem_lammps::compat::minimum_image(domain, r[0], r[1], r[2]);
+    const double c[3] = {r[1] * n[2] - r[2] * n[1], r[2] * n[0] - r[0] * n[2], r[0] * n[1] - r[1] * n[0]};
+    const double *I = inv_i + 9 * b;
+    double q = 0.0;
+    for (int i = 0; i < 3; i++) q += c[i] * (I[3 * i] * c[0] + I[3 * i + 1] * c[1] + I[3 * i + 2] * c[2]);
+    return 1.0 / mass[b] + q;
+  }
+};
+
+}  // namespace tdem_lammps
