@@ -20,6 +20,7 @@
 
 #include "collision/analytic.h"
 #include "collision/integrate_impact.h"
+#include "collision/phase_average.h"
 #include "collision/oblique.h"
 #include "integrators/schemes.h"
 

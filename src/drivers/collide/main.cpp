@@ -26,6 +26,7 @@
 #include "collision/head_on.h"
 #include "collision/analytic.h"
 #include "collision/integrate_impact.h"
+#include "collision/phase_average.h"
 #include "collision/oblique.h"
 #include "collision/rigid_body.h"
 #include "contact/tangential/di_renzo.h"
