@@ -3,6 +3,7 @@
 
 #include "fix_tdem_clump.h"
 
+#include "fixes/clumps/clump_args.h"
 #include "fixes/clumps/host_bodies.h"
 
 #include "atom.h"
@@ -101,157 +102,22 @@ FixTDEMClump::~FixTDEMClump()
 
 void FixTDEMClump::parse(int narg, char **arg)
 {
-  const std::string syntax =
-      "fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO] "
-      "[integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson] "
-      "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule] "
-      "[correction none|count|overlap|local_mass]";
-  auto need = [&](int iarg, int n, const std::string &key, const std::string &what) {
-    if (iarg + n >= narg) error->all(FLERR, where + ": keyword '" + key + "' needs " + what + "; syntax: " + syntax);
-  };
-  auto num = [&](const char *s, const std::string &key) {
-    char *end = nullptr;
-    const double v = std::strtod(s, &end);
-    if (end == s || *end != '\0' || !std::isfinite(v))
-      error->all(FLERR, where + ": keyword '" + key + "': value '" + std::string(s) + "' is not a number");
-    return v;
-  };
-  auto integer = [&](const char *s, const std::string &key, long long lo, long long hi) {
-    const double v = num(s, key);
-    if (v != std::floor(v) || v < (double) lo || v > (double) hi)
-      error->all(FLERR, where + ": keyword '" + key + "': value '" + std::string(s) + "' is not an integer in [" +
-                            std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return (long long) v;
-  };
-  std::string name, kind, path, shape, integ = "columns";
-  double r = 0.0, d = 0.0, rho = -1.0;
-  int n = 2, resolution = 64;
-  bool have_rotation = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "template") {
-      need(iarg, 1, key, "a name");
-      name = arg[iarg + 1];
-      iarg += 2;
-    } else if (key == "file") {
-      need(iarg, 1, key, "a path");
-      kind = "file";
-      path = arg[iarg + 1];
-      iarg += 2;
-    } else if (key == "shape") {
-      need(iarg, 3, key, "SHAPE r d [n]");
-      kind = "shape";
-      shape = arg[iarg + 1];
-      if (shape != "single" && shape != "dimer" && shape != "rod" && shape != "tetra" && shape != "square4" &&
-          shape != "cube8")
-        error->all(FLERR, where + ": shape '" + shape + "' is unknown; allowed: single, dimer, rod, tetra, square4, cube8");
-      r = num(arg[iarg + 2], "shape r");
-      d = num(arg[iarg + 3], "shape d");
-      if (!(r > 0.0)) error->all(FLERR, where + ": shape radius r = " + std::string(arg[iarg + 2]) + " is outside (0, inf)");
-      if (!(d >= 0.0)) error->all(FLERR, where + ": shape distance d = " + std::string(arg[iarg + 3]) + " is outside [0, inf)");
-      iarg += 4;
-      if (shape == "rod") {
-        need(iarg - 1, 1, "shape rod", "the number of spheres n");
-        n = (int) integer(arg[iarg], "shape rod n", 1, 1000);
-        iarg += 1;
-      }
-    } else if (key == "density") {
-      need(iarg, 1, key, "a value");
-      rho = num(arg[iarg + 1], key);
-      if (!(rho > 0.0)) error->all(FLERR, where + ": density " + std::string(arg[iarg + 1]) + " is outside (0, inf)");
-      iarg += 2;
-    } else if (key == "integration") {
-      need(iarg, 1, key, "a value (columns, voxel, monte_carlo)");
-      integ = arg[iarg + 1];
-      if (integ != "columns" && integ != "voxel" && integ != "monte_carlo")
-        error->all(FLERR, where + ": integration '" + integ + "' is unknown; allowed: columns, voxel, monte_carlo");
-      iarg += 2;
-    } else if (key == "resolution") {
-      need(iarg, 1, key, "a value");
-      resolution = (int) integer(arg[iarg + 1], key, 4, 4096);
-      iarg += 2;
-    } else if (key == "rotation") {
-      need(iarg, 1, key, "a value (splitting, explicit, richardson)");
-      const std::string v = arg[iarg + 1];
-      if (v == "splitting") scheme = cl::Rotation::splitting;
-      else if (v == "explicit") scheme = cl::Rotation::explicit_rodrigues;
-      else if (v == "richardson") scheme = cl::Rotation::richardson;
-      else error->all(FLERR, where + ": rotation '" + v + "' is unknown; allowed: splitting, explicit, richardson");
-      have_rotation = true;
-      iarg += 2;
-    } else if (key == "insert") {
-      need(iarg, 5, key, "N region REGID seed S");
-      ninsert = (int) integer(arg[iarg + 1], "insert N", 1, 100000000);
-      if (std::string(arg[iarg + 2]) != "region")
-        error->all(FLERR, where + ": insert: expected 'region' after N, got '" + std::string(arg[iarg + 2]) + "'");
-      insert_region = arg[iarg + 3];
-      if (std::string(arg[iarg + 4]) != "seed")
-        error->all(FLERR, where + ": insert: expected 'seed' after the region, got '" + std::string(arg[iarg + 4]) + "'");
-      insert_seed = integer(arg[iarg + 5], "insert seed", 1, 2147483647);
-      iarg += 6;
-      while (iarg < narg) {
-        const std::string k2 = arg[iarg];
-        if (k2 == "type") {
-          need(iarg, 1, "insert type", "a value");
-          insert_type = (int) integer(arg[iarg + 1], "insert type", 1, atom->ntypes);
-          iarg += 2;
-        } else if (k2 == "vel") {
-          need(iarg, 3, "insert vel", "vx vy vz");
-          for (int k = 0; k < 3; k++) insert_vel[k] = num(arg[iarg + 1 + k], "insert vel");
-          iarg += 4;
-        } else {
-          break;
-        }
-      }
-    } else if (key == "bodies") {
-      need(iarg, 1, key, "a value (molecule)");
-      if (std::string(arg[iarg + 1]) != "molecule")
-        error->all(FLERR, where + ": bodies '" + std::string(arg[iarg + 1]) + "' is unknown; allowed: molecule");
-      bodies_molecule = 1;
-      iarg += 2;
-    } else if (key == "correction") {
-      need(iarg, 1, key, "a value (none, count, overlap, local_mass)");
-      const std::string v = arg[iarg + 1];
-      if (v != "none" && v != "count" && v != "overlap" && v != "local_mass")
-        error->all(FLERR, where + ": correction '" + v + "' is unknown; allowed: none, count, overlap, local_mass");
-      correction = (int) cl::correction_from_string(v);
-      iarg += 2;
-    } else {
-      error->all(FLERR, where + ": unknown keyword '" + key +
-                            "'; allowed: template, file, shape, density, integration, resolution, rotation, "
-                            "insert, bodies, correction; syntax: " + syntax);
-    }
-  }
-  (void) have_rotation;
-  if (name.empty()) error->all(FLERR, where + ": missing keyword 'template NAME'; syntax: " + syntax);
-  if (kind.empty()) error->all(FLERR, where + ": missing 'file PATH' or 'shape SHAPE r d [n]'; syntax: " + syntax);
-  if (kind == "shape" && rho < 0.0)
-    error->all(FLERR, where + ": missing keyword 'density RHO' (needed for the mass of shape " + shape + ")");
-  if (kind == "shape" && shape != "single" && !(d > 0.0))
-    error->all(FLERR, where + ": shape distance d = 0 is outside (0, inf) for shape " + shape);
-  if (ninsert == 0) bodies_molecule = 1;
-  build_template(kind, path, shape, r, d, n, rho, resolution, integ);
-  tmpl.name = name;
-}
-
-void FixTDEMClump::build_template(const std::string &kind, const std::string &path, const std::string &shape,
-                                  double r, double d, int n, double rho, int resolution, const std::string &integ)
-{
-  const cl::Integration method = integ == "voxel"       ? cl::Integration::voxel
-                                 : integ == "monte_carlo" ? cl::Integration::monte_carlo
-                                                          : cl::Integration::columns;
+  // the arguments and the template: one parser for both engines (fixes/clumps/clump_args.h)
+  cl::ClumpArgs a;
   try {
-    if (kind == "file") {
-      tmpl = cl::read_template_file(path, rho > 0.0 ? rho : 0.0);
-    } else {
-      tmpl = cl::make_template(shape, cl::builtin_shape(shape, r, d, n), rho, resolution, method);
-    }
-    // the union of disjoint spheres is the sum of the spheres: exact mass properties
-    cl::exact_if_disjoint(tmpl);
+    a = cl::parse_clump_args(std::vector<std::string>(arg + 3, arg + narg), where, atom->ntypes);
+    tmpl = cl::clump_template(a, where);
   } catch (const std::exception &e) {
-    error->all(FLERR, where + ": template: " + std::string(e.what()));
+    error->all(FLERR, e.what());
   }
+  scheme = a.scheme;
+  ninsert = a.ninsert;
+  insert_type = a.insert_type;
+  insert_region = a.insert_region;
+  insert_seed = a.insert_seed;
+  for (int k = 0; k < 3; k++) insert_vel[k] = a.insert_vel[k];
+  bodies_molecule = a.bodies_molecule ? 1 : 0;
+  correction = (int) a.correction;
   bprop = cl::Body::from(tmpl);
   nsph = (int) tmpl.body.size();
   sphere_mass = cl::sphere_masses(tmpl);  // the body mass shared by r^3; exactly M for one sphere

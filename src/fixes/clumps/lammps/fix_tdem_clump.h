@@ -92,8 +92,6 @@ class FixTDEMClump : public Fix {
   double dtv, dtf;
 
   void parse(int, char **);
-  void build_template(const std::string &kind, const std::string &path, const std::string &shape,
-                      double r, double d, int n, double rho, int resolution, const std::string &integ);
   void insert_clumps();
   void form_bodies();
   void map_atoms();

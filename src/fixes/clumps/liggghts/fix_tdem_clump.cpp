@@ -29,6 +29,7 @@
 #include "region.h"
 #include "update.h"
 
+#include "fixes/clumps/clump_args.h"
 #include "fixes/clumps/host_bodies.h"
 #include "tdem_liggghts_ids.h"
 
@@ -64,11 +65,6 @@ struct NeighborExclusionPeek : public Neighbor {
   }
 };
 
-const char* kSyntax =
-    "fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO] "
-    "[integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson] "
-    "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule] "
-    "[correction none|count|overlap|local_mass]";
 }  // namespace
 
 /* ---------------------------------------------------------------------- */
@@ -147,147 +143,23 @@ int FixTDEMClump::setmask() {
 /* ---------------------------------------------------------------------- input */
 
 void FixTDEMClump::parse(int narg, char** arg) {
-  auto need = [&](int iarg, int n, const std::string& key, const std::string& what) {
-    if (iarg + n >= narg) fail(where_ + ": keyword '" + key + "' needs " + what + "; syntax: " + kSyntax);
-  };
-  auto number = [&](const char* s, const std::string& key) {
-    char* end = nullptr;
-    const double v = std::strtod(s, &end);
-    if (end == s || *end != '\0' || !std::isfinite(v))
-      fail(where_ + ": keyword '" + key + "': value '" + std::string(s) + "' is not a number");
-    return v;
-  };
-  auto integer = [&](const char* s, const std::string& key, long long lo, long long hi) {
-    const double v = number(s, key);
-    if (v != std::floor(v) || v < static_cast<double>(lo) || v > static_cast<double>(hi))
-      fail(where_ + ": keyword '" + key + "': value '" + std::string(s) + "' is not an integer in [" +
-           std::to_string(lo) + ", " + std::to_string(hi) + "]");
-    return static_cast<long long>(v);
-  };
-  std::string name, kind, path, shape, integ = "columns";
-  double r = 0.0, d = 0.0, rho = -1.0;
-  int n = 2, resolution = 64;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "template") {
-      need(iarg, 1, key, "a name");
-      name = arg[iarg + 1];
-      iarg += 2;
-    } else if (key == "file") {
-      need(iarg, 1, key, "a path");
-      kind = "file";
-      path = arg[iarg + 1];
-      iarg += 2;
-    } else if (key == "shape") {
-      need(iarg, 3, key, "SHAPE r d [n]");
-      kind = "shape";
-      shape = arg[iarg + 1];
-      if (shape != "single" && shape != "dimer" && shape != "rod" && shape != "tetra" && shape != "square4" &&
-          shape != "cube8")
-        fail(where_ + ": keyword 'shape': value '" + shape +
-             "' is unknown; allowed: single, dimer, rod, tetra, square4, cube8");
-      r = number(arg[iarg + 2], "shape r");
-      d = number(arg[iarg + 3], "shape d");
-      if (!(r > 0.0)) fail(where_ + ": keyword 'shape': radius r = " + std::string(arg[iarg + 2]) + " is outside (0, inf)");
-      if (!(d >= 0.0))
-        fail(where_ + ": keyword 'shape': distance d = " + std::string(arg[iarg + 3]) + " is outside [0, inf)");
-      iarg += 4;
-      if (shape == "rod") {
-        if (iarg >= narg) fail(where_ + ": keyword 'shape rod' needs the number of spheres n; syntax: " + kSyntax);
-        n = static_cast<int>(integer(arg[iarg], "shape rod n", 1, 1000));
-        iarg += 1;
-      }
-    } else if (key == "density") {
-      need(iarg, 1, key, "a value");
-      rho = number(arg[iarg + 1], key);
-      if (!(rho > 0.0)) fail(where_ + ": keyword 'density': value " + std::string(arg[iarg + 1]) + " is outside (0, inf)");
-      iarg += 2;
-    } else if (key == "integration") {
-      need(iarg, 1, key, "a value (columns, voxel, monte_carlo)");
-      integ = arg[iarg + 1];
-      if (integ != "columns" && integ != "voxel" && integ != "monte_carlo")
-        fail(where_ + ": keyword 'integration': value '" + integ + "' is unknown; allowed: columns, voxel, monte_carlo");
-      iarg += 2;
-    } else if (key == "resolution") {
-      need(iarg, 1, key, "a value");
-      resolution = static_cast<int>(integer(arg[iarg + 1], key, 4, 4096));
-      iarg += 2;
-    } else if (key == "rotation") {
-      need(iarg, 1, key, "a value (splitting, explicit, richardson)");
-      const std::string v = arg[iarg + 1];
-      if (v == "splitting") scheme_ = cl::Rotation::splitting;
-      else if (v == "explicit") scheme_ = cl::Rotation::explicit_rodrigues;
-      else if (v == "richardson") scheme_ = cl::Rotation::richardson;
-      else fail(where_ + ": keyword 'rotation': value '" + v + "' is unknown; allowed: splitting, explicit, richardson");
-      iarg += 2;
-    } else if (key == "insert") {
-      need(iarg, 5, key, "N region REGID seed S");
-      ninsert_ = static_cast<int>(integer(arg[iarg + 1], "insert N", 1, 100000000));
-      if (std::string(arg[iarg + 2]) != "region")
-        fail(where_ + ": keyword 'insert': expected 'region' after N, got '" + std::string(arg[iarg + 2]) + "'");
-      insert_region_ = arg[iarg + 3];
-      if (std::string(arg[iarg + 4]) != "seed")
-        fail(where_ + ": keyword 'insert': expected 'seed' after the region, got '" + std::string(arg[iarg + 4]) + "'");
-      insert_seed_ = integer(arg[iarg + 5], "insert seed", 1, 2147483647);
-      iarg += 6;
-      while (iarg < narg) {
-        const std::string k2 = arg[iarg];
-        if (k2 == "type") {
-          need(iarg, 1, "insert type", "a value");
-          insert_type_ = static_cast<int>(integer(arg[iarg + 1], "insert type", 1, atom->ntypes));
-          iarg += 2;
-        } else if (k2 == "vel") {
-          need(iarg, 3, "insert vel", "vx vy vz");
-          for (int k = 0; k < 3; k++) insert_vel_[k] = number(arg[iarg + 1 + k], "insert vel");
-          iarg += 4;
-        } else {
-          break;
-        }
-      }
-    } else if (key == "bodies") {
-      need(iarg, 1, key, "a value (molecule)");
-      if (std::string(arg[iarg + 1]) != "molecule")
-        fail(where_ + ": keyword 'bodies': value '" + std::string(arg[iarg + 1]) + "' is unknown; allowed: molecule");
-      bodies_molecule_ = true;
-      iarg += 2;
-    } else if (key == "correction") {
-      need(iarg, 1, key, "a value (none, count, overlap, local_mass)");
-      try {
-        correction_ = cl::correction_from_string(arg[iarg + 1]);
-      } catch (const std::exception&) {
-        fail(where_ + ": keyword 'correction': value '" + std::string(arg[iarg + 1]) +
-             "' is unknown; allowed: none, count, overlap, local_mass");
-      }
-      iarg += 2;
-    } else {
-      fail(where_ + ": unknown keyword '" + key +
-           "'; allowed: template, file, shape, density, integration, resolution, rotation, insert, bodies, "
-           "correction; syntax: " +
-           kSyntax);
-    }
-  }
-  if (name.empty()) fail(where_ + ": missing keyword 'template NAME'; syntax: " + kSyntax);
-  if (kind.empty()) fail(where_ + ": missing 'file PATH' or 'shape SHAPE r d [n]'; syntax: " + kSyntax);
-  if (kind == "shape" && rho < 0.0)
-    fail(where_ + ": missing keyword 'density RHO' (needed for the mass of shape " + shape + ")");
-  if (kind == "shape" && shape != "single" && !(d > 0.0))
-    fail(where_ + ": keyword 'shape': distance d = 0 is outside (0, inf) for shape " + shape);
-  if (ninsert_ == 0) bodies_molecule_ = true;
-
-  const cl::Integration method = integ == "voxel"         ? cl::Integration::voxel
-                                 : integ == "monte_carlo" ? cl::Integration::monte_carlo
-                                                          : cl::Integration::columns;
+  // the arguments and the template: one parser for both engines (fixes/clumps/clump_args.h)
+  cl::ClumpArgs a;
   try {
-    if (kind == "file")
-      tmpl_ = cl::read_template_file(path, rho > 0.0 ? rho : 0.0);
-    else
-      tmpl_ = cl::make_template(shape, cl::builtin_shape(shape, r, d, n), rho, resolution, method);
-    cl::exact_if_disjoint(tmpl_);
+    a = cl::parse_clump_args(std::vector<std::string>(arg + 3, arg + narg), where_, atom->ntypes);
+    tmpl_ = cl::clump_template(a, where_);
   } catch (const std::exception& e) {
-    fail(where_ + ": template: " + std::string(e.what()));
+    fail(e.what());
   }
-  tmpl_.name = name;
+  scheme_ = a.scheme;
+  ninsert_ = a.ninsert;
+  insert_type_ = a.insert_type;
+  insert_region_ = a.insert_region;
+  insert_seed_ = a.insert_seed;
+  for (int k = 0; k < 3; k++) insert_vel_[k] = a.insert_vel[k];
+  bodies_molecule_ = a.bodies_molecule;
+  correction_ = a.correction;
+  const std::string name = tmpl_.name;
   bprop_ = cl::Body::from(tmpl_);
   nsph_ = static_cast<int>(tmpl_.body.size());
   sphere_mass_ = cl::sphere_masses(tmpl_);
