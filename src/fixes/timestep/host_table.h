@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -276,6 +277,25 @@ inline Now recheck(std::vector<Row>& rows, double v_pair, double v_wall, const s
 }
 
 // ---------------------------------------------------------------- run-time scans (both engines)
+// The smallest mass, radius and density per atom type of the local atoms with all of `bits` set
+// in their mask (3 (ntypes + 1) entries: masses, radii, densities, each indexed by type; a type
+// without such atoms keeps the largest double), reduce with MPI_MIN.
+inline std::vector<double> local_type_minima(const double* rmass, const double* radius, const int* type,
+                                             const int* mask, int nlocal, int bits, int ntypes) {
+  const std::size_t nt1 = static_cast<std::size_t>(ntypes + 1);
+  std::vector<double> loc(3 * nt1, std::numeric_limits<double>::max());
+  for (int i = 0; i < nlocal; i++) {
+    if ((mask[i] & bits) != bits) continue;
+    const std::size_t t = static_cast<std::size_t>(type[i]);
+    const double m = rmass[i], r = radius[i];
+    if (!(r > 0.0)) continue;
+    loc[t] = std::min(loc[t], m);
+    loc[nt1 + t] = std::min(loc[nt1 + t], r);
+    loc[2 * nt1 + t] = std::min(loc[2 * nt1 + t], m / (4.0 / 3.0 * M_PI * r * r * r));
+  }
+  return loc;
+}
+
 // The largest squared speed of the local atoms of the group (reduce with MPI_MAX, then sqrt).
 inline double local_largest_speed2(double* const* v, const int* mask, int nlocal, int groupbit) {
   double v2 = 0.0;

@@ -360,16 +360,8 @@ void FixTDEMTimestep::law_row(const std::string& model, int i, int j, th::Row& r
 void FixTDEMTimestep::type_minima(int mask_bits, std::vector<double>& mmin, std::vector<double>& rmin,
                                   std::vector<double>& rhomin) {
   const int nt = atom->ntypes;
-  std::vector<double> loc(3 * (nt + 1), kBig);
-  for (int i = 0; i < atom->nlocal; i++) {
-    if ((atom->mask[i] & mask_bits) != mask_bits) continue;
-    const int t = atom->type[i];
-    const double m = atom->rmass[i], r = atom->radius[i];
-    if (!(r > 0.0)) continue;
-    loc[t] = std::min(loc[t], m);
-    loc[nt + 1 + t] = std::min(loc[nt + 1 + t], r);
-    loc[2 * (nt + 1) + t] = std::min(loc[2 * (nt + 1) + t], m / (4.0 / 3.0 * M_PI * r * r * r));
-  }
+  const std::vector<double> loc = tdem::advice::host::local_type_minima(atom->rmass, atom->radius, atom->type,
+                                                                       atom->mask, atom->nlocal, mask_bits, nt);
   std::vector<double> all(loc.size());
   MPI_Allreduce(loc.data(), all.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MIN, world);
   mmin.assign(all.begin(), all.begin() + nt + 1);
