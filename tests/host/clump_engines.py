@@ -13,11 +13,12 @@ usage: clump_engines.py --lammps TDEM_LAMMPS --liggghts TDEM_LIGGGHTS [--mpirun 
 import argparse
 import os
 import shutil
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+
+import mpi_env  # private TMPDIR per run (Open MPI 4.1 session-directory race)
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--lammps", required=True)
@@ -94,7 +95,7 @@ def run(exe, text, d, np_=1):
     cmd = [exe, "-in", "in.ins", "-log", "log.ins", "-echo", "none"]
     if np_ > 1:
         cmd = [args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(np_)] + cmd
-    r = subprocess.run(cmd, cwd=d, capture_output=True, text=True, errors="replace", timeout=300)
+    r = mpi_env.run(cmd, cwd=d, capture_output=True, text=True, errors="replace", timeout=300)
     if r.returncode != 0:
         sys.exit("FAIL: %s exited with %d:\n%s" % (exe, r.returncode, (r.stdout + r.stderr)[-3000:]))
     rows = []

@@ -37,6 +37,7 @@ import time
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "tests", "host", "liggghts"))
 import tdem_lig as T  # noqa: E402
+import mpi_env  # noqa: E402 (tests/host, put on the path by tdem_lig)
 
 PI = math.pi
 
@@ -761,7 +762,7 @@ def run_one(args, name, sc, law, check, np_, wd, stock=False):
     cmd = [exe, "-in", "in.case", "-log", "log.case", "-echo", "none", "-screen", "none"]
     if np_ > 1:
         cmd = [args.mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(np_)] + cmd
-    r = subprocess.run(cmd, cwd=d, capture_output=True, text=True, errors="replace", timeout=300)
+    r = mpi_env.run(cmd, cwd=d, capture_output=True, text=True, errors="replace", timeout=300)
     if r.returncode != 0:
         log = open(os.path.join(d, "log.case"), errors="replace").read() if os.path.exists(os.path.join(d, "log.case")) else ""
         err = [l for l in (log + r.stdout + r.stderr).splitlines() if "ERROR" in l]

@@ -41,6 +41,11 @@ else
 fi
 rm -rf "$work"
 mkdir -p "$work" "$results" || exit 2
+# Open MPI 4.1 keeps a session directory in $TMPDIR that concurrent runs race on (see
+# tests/host/mpi_env.py): this script's runs get a directory of their own
+TMPDIR=$(mktemp -d /tmp/tdem_mpi_XXXXXX) || exit 2
+export TMPDIR
+trap 'rm -rf "$TMPDIR"' EXIT
 scenes="$root/input_scripts/liggghts"
 
 run_scene() { # $1 scene file, $2 tag, further args: -var pairs

@@ -10,6 +10,9 @@ import tempfile
 
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import mpi_env  # noqa: E402
+
 
 def parse_args(argv):
     """--tdem PATH --lmp PATH --plugin PATH --mpirun PATH (all optional)."""
@@ -74,7 +77,7 @@ def run(exe, text, cwd, name="in.test", np_=1, mpirun="mpirun", extra=(), timeou
     cmd = [exe, "-in", name, "-log", "log." + name, "-echo", "none"] + list(extra)
     if np_ > 1:
         cmd = [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(np_)] + cmd
-    p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+    p = mpi_env.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                        timeout=timeout, text=True)
     if check and p.returncode != 0:
         sys.stdout.write(p.stdout[-4000:])

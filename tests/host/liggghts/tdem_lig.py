@@ -7,11 +7,13 @@ import argparse
 import os
 import re
 import shutil
-import subprocess
 import sys
 import tempfile
 
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+import mpi_env  # noqa: E402
 
 
 def parse_args(extra=None):
@@ -43,7 +45,7 @@ def run(exe, text, cwd, name, np_=1, mpirun="mpirun", check=True, timeout=600):
     if np_ > 1:
         cmd = [mpirun, "--allow-run-as-root", "--oversubscribe", "-np", str(np_)] + cmd
     env = dict(os.environ, OMPI_MCA_rmaps_base_oversubscribe="1")
-    r = subprocess.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace", timeout=timeout,
+    r = mpi_env.run(cmd, cwd=cwd, capture_output=True, text=True, errors="replace", timeout=timeout,
                        env=env)
     if check and r.returncode != 0:
         sys.stderr.write(r.stdout[-4000:] + r.stderr[-4000:])

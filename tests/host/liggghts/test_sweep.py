@@ -23,6 +23,7 @@ sys.path.insert(0, os.path.dirname(HERE))
 import sweep_common as SC  # noqa: E402
 import law_props as LP  # noqa: E402
 import tdem_lig as T  # noqa: E402
+import mpi_env  # noqa: E402
 
 args = T.parse_args()
 chk = T.Checks()
@@ -168,7 +169,7 @@ def execute(k):
     cmd = ["stdbuf", "-o0", "-e0", args.tdem, "-in", inp, "-log", os.path.join(wd, "log.sweep%03d" % k),
            "-echo", "none"]
     try:
-        r = subprocess.run(cmd, cwd=wd, capture_output=True, text=True, errors="replace", timeout=60)
+        r = mpi_env.run(cmd, cwd=wd, capture_output=True, text=True, errors="replace", timeout=60)
     except subprocess.TimeoutExpired:
         return [(False, "%s: no hang (timeout)" % name)], "hang"
     return SC.verdict(name, r.returncode, r.stdout + r.stderr, expect, words, (HOST_PARSER,))

@@ -19,6 +19,7 @@ import sweep_common as SC  # noqa: E402
 import fix_sweep as FS  # noqa: E402
 import law_props as LP  # noqa: E402
 import tdem_lig as T  # noqa: E402
+import mpi_env  # noqa: E402
 
 args = T.parse_args()
 chk = T.Checks()
@@ -94,7 +95,7 @@ def execute(k):
         f.write(text)
     cmd = ["stdbuf", "-o0", "-e0", args.tdem, "-in", "in.case", "-log", "log.case", "-echo", "none"]
     try:
-        r = subprocess.run(cmd, cwd=d, capture_output=True, text=True, errors="replace", timeout=60)
+        r = mpi_env.run(cmd, cwd=d, capture_output=True, text=True, errors="replace", timeout=60)
     except subprocess.TimeoutExpired:
         return [(False, "%s: no hang (timeout)" % name)], "hang"
     return SC.verdict(name, r.returncode, r.stdout + r.stderr, expect, words)
