@@ -26,6 +26,7 @@
 
 #include "../kinematics.h"
 #include "../input_checks.h"
+#include "../law_parameters.h"
 
 namespace tdem {
 namespace power_law {
@@ -44,6 +45,17 @@ struct Params {
 inline constexpr HistorySlot history[] = {{"xi_max", false}, {"xi_f", false}};
 inline constexpr int history_size = 2;
 enum Slot { xi_max_slot = 0, xi_f_slot = 1 };
+
+// The input line `normal power_law AL P AUL [Q]` (src/contact/law_parameters.h).
+inline constexpr law::Parameter parameters[] = {
+    {"AL", "loading coefficient a_l", "N/m^P", law::Bound::positive},
+    {"P", "loading exponent", "1", law::Bound::positive},
+    {"AUL", "unloading coefficient a_ul", "N/m^(P+Q)", law::Bound::positive},
+    {"Q", "extra unloading exponent", "1", law::Bound::non_negative, -1, true, 0.0},
+};
+inline constexpr law::Description description =
+    law::describe("normal", "power_law", false, parameters, history, history_size);
+inline Params<double> from_values(const double* v) { return {v[0], v[1], v[2], v[3]}; }
 
 // x^a with the common exponents of this law (1, 3/2, 2) without pow(); predictable branches.
 template <class T>

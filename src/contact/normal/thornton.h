@@ -23,6 +23,8 @@
 
 #include "../kinematics.h"
 #include "../input_checks.h"
+#include "../law_parameters.h"
+#include "../material.h"
 
 namespace tdem {
 namespace thornton {
@@ -37,6 +39,17 @@ struct Params {
 inline constexpr HistorySlot history[] = {{"xi_max", false}, {"f_max", false}};
 inline constexpr int history_size = 2;
 enum Slot { xi_max_slot = 0, f_max_slot = 1 };
+
+// The input line `normal thornton E NU [E2 NU2] PY` (src/contact/law_parameters.h); the values
+// are E1 NU1 E2 NU2 PY.
+inline constexpr law::Parameter parameters[] = {
+    {"PY", "limiting contact pressure", "Pa", law::Bound::positive},
+};
+inline constexpr law::Description description =
+    law::describe("normal", "thornton", true, parameters, history, history_size);
+inline Params<double> from_values(const double* v) {
+  return {material::effective_modulus(v[0], v[1], v[2], v[3]), v[4]};
+}
 
 // Loading curve F(xi) with its slope; R* from the contact.
 template <class T>

@@ -21,6 +21,7 @@
 
 #include "../kinematics.h"
 #include "../input_checks.h"
+#include "../law_parameters.h"
 
 namespace tdem {
 namespace walton_braun {
@@ -42,6 +43,16 @@ inline Params<double> force_dependent(double k_l, double s) { return {k_l, k_l, 
 inline constexpr HistorySlot history[] = {{"xi_max", false}};
 inline constexpr int history_size = 1;
 enum Slot { xi_max_slot = 0 };
+
+// The input line `normal walton_braun KL KUL [S]` (src/contact/law_parameters.h).
+inline constexpr law::Parameter parameters[] = {
+    {"KL", "loading stiffness", "N/m", law::Bound::positive},
+    {"KUL", "unloading stiffness", "N/m", law::Bound::at_least, 0},
+    {"S", "slope of KUL with F_max", "1/m", law::Bound::non_negative, -1, true, 0.0},
+};
+inline constexpr law::Description description =
+    law::describe("normal", "walton_braun", false, parameters, history, history_size);
+inline Params<double> from_values(const double* v) { return {v[0], v[1], v[2]}; }
 
 template <class T>
 TDEM_KERNEL T unloading_stiffness(const Params<T>& p, T xi_max) noexcept {

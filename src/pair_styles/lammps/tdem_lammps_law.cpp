@@ -6,6 +6,7 @@
 #include "error.h"
 #include "lammps.h"
 
+#include "contact/laws.h"
 #include "contact/tangential/parameters.h"
 #include "contact/usual_ranges.h"
 
@@ -221,27 +222,52 @@ int parse_range(LAMMPS *lmp, const std::string &where, const std::string &law, i
   return iarg;
 }
 
-// normal power_law AL P AUL [Q]
-int parse_power_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
-                    LawCoeffs &c) {
-  c.mode = MODE_POWER_LAW;
+// A law of the list of src/contact/laws.h: `normal NAME v1 v2 ...` at arg[iarg] (the first
+// value). The count, the numbers and their ranges are checked from the law's Description, in
+// the same words for every law; the values (materials expanded) go to `values`.
+int parse_described(LAMMPS *lmp, const std::string &where, const tdem::law::Description &d, int narg,
+                    char **arg, int iarg, double *values) {
+  namespace law = tdem::law;
   const int n = available(narg, arg, iarg);
-  if (n != 3 && n != 4)
-    fail(lmp, where, "normal power_law needs 3 or 4 values (AL P AUL [Q]), got " + std::to_string(n));
-  c.pl.a_load = number(lmp, where, "normal power_law AL", arg[iarg]);
-  c.pl.p = number(lmp, where, "normal power_law P", arg[iarg + 1]);
-  c.pl.a_unload = number(lmp, where, "normal power_law AUL", arg[iarg + 2]);
-  c.pl.q = n == 4 ? number(lmp, where, "normal power_law Q", arg[iarg + 3]) : 0.0;
-  positive(lmp, where, "normal power_law AL (loading coefficient a_l)", c.pl.a_load);
-  positive(lmp, where, "normal power_law P (loading exponent)", c.pl.p);
-  positive(lmp, where, "normal power_law AUL (unloading coefficient a_ul)", c.pl.a_unload);
-  non_negative(lmp, where, "normal power_law Q (extra unloading exponent)", c.pl.q);
-  try {
-    tdem::power_law::validate(c.pl);
-  } catch (const std::exception &ex) {
-    fail(lmp, where, std::string("normal power_law: ") + ex.what());
+  if (!law::count_ok(d, n)) fail(lmp, where, law::count_message(d, n));
+  double words[law::MATERIAL_VALUES + 8];
+  for (int k = 0; k < n; ++k)
+    words[k] = number(lmp, where,
+                      std::string(d.kind) + " " + d.name + " " + law::parameter(d, law::value_index(d, n, k)).name,
+                      arg[iarg + k]);
+  law::expand(d, words, n, values);
+  const std::string bad = law::check(d, values);
+  if (!bad.empty()) fail(lmp, where, bad);
+  for (int k = 0; k < n; ++k) {  // usual ranges of the given words
+    const int v = law::value_index(d, n, k);
+    if (law::parameter(d, v).bound == law::Bound::poisson)
+      unusual(lmp, where, law::value_name(d, v) + ": ", tdem::usual::poisson(values[v]));
   }
   return iarg + n;
+}
+
+// Store the values of a listed law in the type pair's coefficients (the restart layout).
+void store_described(LAMMPS *lmp, const std::string &where, const tdem::law::Description &d, const double *v,
+                     LawCoeffs &c) {
+  if (&d == &tdem::walton_braun::description) {
+    c.mode = MODE_WALTON_BRAUN;
+    const auto p = tdem::walton_braun::from_values(v);
+    c.wb_kl = p.k_load, c.wb_ku = p.k_unload, c.wb_s = p.slope;
+  } else if (&d == &tdem::thornton::description) {
+    c.mode = MODE_THORNTON;
+    c.E1 = v[0], c.nu1 = v[1], c.E2 = v[2], c.nu2 = v[3];
+    c.th_py = tdem::thornton::from_values(v).p_y;
+  } else if (&d == &tdem::power_law::description) {
+    c.mode = MODE_POWER_LAW;
+    c.pl = tdem::power_law::from_values(v);
+    try {
+      tdem::power_law::validate(c.pl);
+    } catch (const std::exception &ex) {
+      fail(lmp, where, std::string("normal power_law: ") + ex.what());
+    }
+  } else {
+    fail(lmp, where, std::string("normal ") + d.name + " has no LAMMPS coefficients yet");
+  }
 }
 
 // normal extended_linear e_fit FORM C.. tc_fit FORM C.. [v_min V] [v_max V]
@@ -392,51 +418,14 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: lsd, hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz");
   if (strcmp(arg[iarg + 1], "hertz") == 0) {
     iarg = parse_hertz(lmp, where, narg, arg, iarg + 2, c);
-  } else if (strcmp(arg[iarg + 1], "power_law") == 0) {
-    iarg = parse_power_law(lmp, where, narg, arg, iarg + 2, c);
+  } else if (const tdem::law::Description *d = tdem::law::find(tdem::law::normal_laws, arg[iarg + 1])) {
+    double v[tdem::law::MATERIAL_VALUES + 8];
+    iarg = parse_described(lmp, where, *d, narg, arg, iarg + 2, v);
+    store_described(lmp, where, *d, v, c);
   } else if (strcmp(arg[iarg + 1], "extended_linear") == 0) {
     iarg = parse_extended(lmp, where, false, narg, arg, iarg + 2, c);
   } else if (strcmp(arg[iarg + 1], "extended_hertz") == 0) {
     iarg = parse_extended(lmp, where, true, narg, arg, iarg + 2, c);
-  } else if (strcmp(arg[iarg + 1], "walton_braun") == 0) {
-    iarg += 2;
-    const int n = available(narg, arg, iarg);
-    if (n != 2 && n != 3)
-      fail(lmp, where,
-           "normal walton_braun needs 2 or 3 values (KL KUL [S]), got " + std::to_string(n));
-    c.mode = MODE_WALTON_BRAUN;
-    c.wb_kl = number(lmp, where, "normal walton_braun KL", arg[iarg]);
-    c.wb_ku = number(lmp, where, "normal walton_braun KUL", arg[iarg + 1]);
-    if (n == 3) c.wb_s = number(lmp, where, "normal walton_braun S", arg[iarg + 2]);
-    positive(lmp, where, "normal walton_braun KL (loading stiffness)", c.wb_kl);
-    if (!(c.wb_ku >= c.wb_kl))
-      fail(lmp, where,
-           "normal walton_braun KUL (unloading stiffness) = " + num(c.wb_ku) +
-               " is outside the allowed range [KL, inf) = [" + num(c.wb_kl) + ", inf)");
-    non_negative(lmp, where, "normal walton_braun S (slope of KUL with F_max)", c.wb_s);
-    iarg += n;
-  } else if (strcmp(arg[iarg + 1], "thornton") == 0) {
-    iarg += 2;
-    const int n = available(narg, arg, iarg);
-    if (n != 3 && n != 5)
-      fail(lmp, where,
-           "normal thornton needs 3 values (E NU PY: both partners of one material) or 5 values "
-           "(E1 NU1 E2 NU2 PY), got " + std::to_string(n));
-    c.mode = MODE_THORNTON;
-    c.E1 = number(lmp, where, "normal thornton E", arg[iarg]);
-    positive(lmp, where, "normal thornton E (Young's modulus)", c.E1);
-    c.nu1 = poisson(lmp, where, "normal thornton NU (Poisson ratio)", arg[iarg + 1]);
-    if (n == 5) {
-      c.E2 = number(lmp, where, "normal thornton E2", arg[iarg + 2]);
-      positive(lmp, where, "normal thornton E2 (Young's modulus)", c.E2);
-      c.nu2 = poisson(lmp, where, "normal thornton NU2 (Poisson ratio)", arg[iarg + 3]);
-    } else {
-      c.E2 = c.E1;
-      c.nu2 = c.nu1;
-    }
-    c.th_py = number(lmp, where, "normal thornton PY", arg[iarg + n - 1]);
-    positive(lmp, where, "normal thornton PY (limiting contact pressure)", c.th_py);
-    iarg += n;
   } else if (strcmp(arg[iarg + 1], "lsd") != 0) {
     fail(lmp, where,
          std::string("normal law '") + arg[iarg + 1] +

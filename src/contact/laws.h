@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: the list of contact laws that describe their input line (src/contact/law_parameters.h).
+// A host parses, checks and reports the values of every law in this list in one place; a law
+// added here with its Description is known to that parser without further edits.
+//
+// The laws with keyword forms (lsd stiffness|restitution, hertz with its damping members, the
+// extended laws with their fits) and the tangential laws are not in the list yet: their hosts
+// parse them by hand.
+#pragma once
+
+#include "law_parameters.h"
+#include "normal/power_law_hysteresis.h"
+#include "normal/thornton.h"
+#include "normal/walton_braun.h"
+
+#include <cstring>
+
+namespace tdem {
+namespace law {
+
+inline constexpr const Description* normal_laws[] = {
+    &walton_braun::description,
+    &thornton::description,
+    &power_law::description,
+};
+
+// The law of `name` in the list, or nullptr.
+template <int N>
+inline const Description* find(const Description* const (&list)[N], const char* name) {
+  for (const Description* d : list)
+    if (std::strcmp(d->name, name) == 0) return d;
+  return nullptr;
+}
+
+}  // namespace law
+}  // namespace tdem
