@@ -404,7 +404,7 @@ variant, `fix nve/sphere` unless said otherwise.
 | normal | `normal lsd stiffness 2000 50 tangential haff_werner 0 0` (the pair always has a tangential law; Haff-Werner with gamma_t = mu = 0 keeps no memory and gives zero force) | `model tdem/lsd tangential off` |
 | normal_mu0 | `tangential cundall_strack 600 0 0` (mu = 0; the spring is evaluated and truncated to zero) | - |
 | tangential | `tangential cundall_strack 600 25 0.5` | `model tdem/lsd tangential tdem/cundall_strack` |
-| rolling | not measured (pair tdem/gran `rolling sds`) | + `rolling_friction epsd2` (compiled for tdem/lsd + tdem/cundall_strack, `register_lsd_rolling.cpp`) |
+| rolling | not measured (pair tdem/gran `rolling sds`) | + `rolling_friction epsd2` (compiled for tdem/lsd + tdem/cundall_strack, `src/pair_styles/liggghts/combos.h`) |
 | clumps | tangential + every sphere a one-sphere body of `fix tdem/clump` (`shape single`, one fix per sphere size, `bodies molecule`, default `rotation splitting`) instead of `nve/sphere` | the same (`atom_style hybrid sphere molecular`, the bed converted with molecule = atom id) |
 | grate_standing / grate_moving | tangential, the floor replaced by `fix tdem/grate` (5 flat rows of 22 mm, rows 1 and 3 moving: stroke 0 / 4 mm at 5 Hz) | same grate as LIGGGHTS meshes + `fix wall/gran ... mesh` |
 | stock_normal | `pair gran/hooke 2000 0 50 0 0 1` (xmu = 0: no tangential force) | `model hooke/stiffness tangential off` |

@@ -54,36 +54,10 @@ void register_combo() {
   note_compiled(hash);
 }
 
-// The same combination with the surface model tdem/clump (the multiple-contact correction of fix
-// tdem/clump); the translation unit includes surface_model_tdem_clump.h.
-template <int N, int T>
-void register_clump_combo() {
-  register_combo<N, T, LIGGGHTS::ContactModels::COHESION_OFF, LIGGGHTS::ContactModels::ROLLING_OFF,
-                 LIGGGHTS::ContactModels::TDEM_CLUMP_SURFACE>();
-}
-
-// One function per translation unit (they compile in parallel).
-void register_lsd_a();
-void register_lsd_b();
-void register_stock_hooke();
-void register_stock_hertz();
-void register_lsd_rolling();
-void register_hertz_rolling();
-void register_hertz();
-void register_walton_braun();
-void register_thornton();
-void register_continuous_potential();
-void register_power_law();
-void register_extended_linear();
-void register_extended_hertz();
-void register_tangential_haff_werner();
-void register_tangential_linear_spring();
-void register_tangential_walton_braun();
-void register_tangential_mindlin_deresiewicz();
-void register_tangential_mindlin_no_slip();
-void register_tangential_di_renzo();
-void register_clump_a();  // surface tdem/clump (register_clump_{a,b}.cpp)
-void register_clump_b();
+// Part k of the list of combinations (combos.h), k < TDEM_LIGGGHTS_PARTS: one generated
+// translation unit each (register_part.inc), so that they compile in parallel.
+template <int Part>
+void register_part();
 
 }  // namespace detail
 }  // namespace liggghts

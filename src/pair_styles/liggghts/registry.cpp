@@ -22,6 +22,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "contact_models.h"
@@ -192,6 +193,12 @@ namespace detail {
 void note_compiled(int64_t hash) { compiled().insert(hash); }
 }  // namespace detail
 
+// The list of combinations (combos.h), part by part.
+template <int... K>
+void register_parts(std::integer_sequence<int, K...>) {
+  (detail::register_part<K>(), ...);
+}
+
 void register_styles() {
   static bool done = false;
   if (done) return;
@@ -214,27 +221,7 @@ void register_styles() {
   models.addTangentialModel(kTangentialDiRenzoName, TDEM_DI_RENZO);
   models.addSurfaceModel(kSurfaceClumpName, TDEM_CLUMP_SURFACE);
   models.addRollingModel(kRollingSdsName, TDEM_SDS);
-  detail::register_lsd_a();
-  detail::register_lsd_b();
-  detail::register_stock_hooke();
-  detail::register_stock_hertz();
-  detail::register_lsd_rolling();
-  detail::register_hertz_rolling();
-  detail::register_hertz();
-  detail::register_walton_braun();
-  detail::register_thornton();
-  detail::register_continuous_potential();
-  detail::register_power_law();
-  detail::register_extended_linear();
-  detail::register_extended_hertz();
-  detail::register_tangential_haff_werner();
-  detail::register_tangential_linear_spring();
-  detail::register_tangential_walton_braun();
-  detail::register_tangential_mindlin_deresiewicz();
-  detail::register_tangential_mindlin_no_slip();
-  detail::register_tangential_di_renzo();
-  detail::register_clump_a();
-  detail::register_clump_b();
+  register_parts(std::make_integer_sequence<int, TDEM_LIGGGHTS_PARTS>());
 }
 
 void attach(LAMMPS_NS::LAMMPS* lmp) {

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: the one list of (normal, tangential, cohesion, rolling, surface) combinations that tdem
+// compiles into LIGGGHTS's pair gran and wall gran, built from the lists of laws by the rules
+// below. The build splits the list over TDEM_LIGGGHTS_PARTS translation units (register_part.inc,
+// generated register_part_<k>.cpp), so that it compiles in parallel; a law added to a list below
+// is compiled in with every partner its rule gives it, with no file to write.
+//
+// The rules (121 combinations with the lists as they are):
+//  - every tdem normal law with the basic tangential models (tdem/cundall_strack, history, off)
+//    and with every tdem tangential law; and with surface tdem/clump and the basic ones;
+//  - tdem/lsd also with the stock no_history, with and without surface tdem/clump;
+//  - tdem/continuous_potential with the basic tangential models only (it passes no tangent
+//    stiffness to a tangential law), with and without surface tdem/clump;
+//  - the stock hertz and hooke with tdem/cundall_strack and every tdem tangential law, and with
+//    surface tdem/clump and the stock history and off; hertz/stiffness with tdem/cundall_strack;
+//    hooke/stiffness with tdem/cundall_strack, and with surface tdem/clump and history, off;
+//  - rolling: tdem/lsd + tdem/cundall_strack with the stock cdt and epsd2 and tdem/sds; tdem/hertz
+//    with tdem/cundall_strack and tdem/mindlin_deresiewicz, each with epsd2 and tdem/sds.
+#pragma once
+
+#include "contact_models.h"
+#include "tdem_liggghts_ids.h"
+
+namespace tdem {
+namespace liggghts {
+namespace combos {
+
+using namespace LIGGGHTS::ContactModels;
+
+// ---------------------------------------------------------------- the lists of laws
+inline constexpr int tdem_normals[] = {TDEM_LSD,       TDEM_HERTZ,           TDEM_WALTON_BRAUN, TDEM_THORNTON,
+                                       TDEM_POWER_LAW, TDEM_EXTENDED_LINEAR, TDEM_EXTENDED_HERTZ};
+inline constexpr int tdem_tangentials[] = {TDEM_HAFF_WERNER,         TDEM_LINEAR_SPRING,   TDEM_WALTON_BRAUN_T,
+                                           TDEM_MINDLIN_DERESIEWICZ, TDEM_MINDLIN_NO_SLIP, TDEM_DI_RENZO};
+inline constexpr int basic_tangentials[] = {TDEM_CUNDALL_STRACK, TANGENTIAL_HISTORY, TANGENTIAL_OFF};
+inline constexpr int stock_normals[] = {HERTZ, HOOKE};
+
+// ---------------------------------------------------------------- the list of combinations
+struct Combo {
+  int normal, tangential, cohesion, rolling, surface;
+};
+
+struct List {
+  static constexpr int capacity = 256;
+  Combo at[capacity] = {};
+  int count = 0;
+  constexpr void add(int n, int t, int r = ROLLING_OFF, int s = SURFACE_DEFAULT) {
+    at[count++] = Combo{n, t, COHESION_OFF, r, s};
+  }
+  constexpr void add_clump(int n, int t) { add(n, t, ROLLING_OFF, TDEM_CLUMP_SURFACE); }
+};
+
+constexpr List build() {
+  List l;
+  for (int n : tdem_normals) {
+    for (int t : basic_tangentials) l.add(n, t), l.add_clump(n, t);
+    for (int t : tdem_tangentials) l.add(n, t);
+  }
+  l.add(TDEM_LSD, TANGENTIAL_NO_HISTORY), l.add_clump(TDEM_LSD, TANGENTIAL_NO_HISTORY);
+  for (int t : basic_tangentials) l.add(TDEM_CONTINUOUS_POTENTIAL, t), l.add_clump(TDEM_CONTINUOUS_POTENTIAL, t);
+  for (int n : stock_normals) {
+    l.add(n, TDEM_CUNDALL_STRACK);
+    for (int t : tdem_tangentials) l.add(n, t);
+    l.add_clump(n, TANGENTIAL_HISTORY), l.add_clump(n, TANGENTIAL_OFF);
+  }
+  l.add(HERTZ_STIFFNESS, TDEM_CUNDALL_STRACK);
+  l.add(HOOKE_STIFFNESS, TDEM_CUNDALL_STRACK);
+  l.add_clump(HOOKE_STIFFNESS, TANGENTIAL_HISTORY), l.add_clump(HOOKE_STIFFNESS, TANGENTIAL_OFF);
+  for (int r : {ROLLING_CDT, ROLLING_EPSD2, TDEM_SDS}) l.add(TDEM_LSD, TDEM_CUNDALL_STRACK, r);
+  for (int t : {TDEM_CUNDALL_STRACK, TDEM_MINDLIN_DERESIEWICZ})
+    for (int r : {ROLLING_EPSD2, TDEM_SDS}) l.add(TDEM_HERTZ, t, r);
+  return l;
+}
+
+inline constexpr List list = build();
+static_assert(list.count <= List::capacity, "raise List::capacity");
+
+// Number of combinations of translation unit `part` of `parts` (indices part, part + parts, ...).
+constexpr int part_count(int part, int parts) {
+  return list.count > part ? (list.count - part + parts - 1) / parts : 0;
+}
+
+}  // namespace combos
+}  // namespace liggghts
+}  // namespace tdem
