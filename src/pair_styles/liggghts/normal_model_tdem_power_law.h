@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem: `model tdem/power_law` -- power-law loading/unloading hysteresis
-// (src/contact/normal/power_law_hysteresis.h) as a LIGGGHTS NormalModel. Adapter only.
+// (src/contact/normal/power_law_hysteresis.h) as a LIGGGHTS NormalModel. Binding only; the body
+// is HistoryNormalModel (normal_model_tdem_history.h).
 //
 //   pair_style gran model tdem/power_law [tangential ...]
 //
@@ -13,130 +14,74 @@
 #pragma once
 
 #include <cstdio>
-#include <stdexcept>
+#include <exception>
 
-#include "contact_models.h"
-#include "normal_model_base.h"
-#include "global_properties.h"
-#include "force.h"
-#include "atom.h"
-#include "error.h"
-#include "update.h"
-
-#include "tdem_liggghts_apply.h"
 #include "contact/normal/power_law_hysteresis.h"
-#include "tdem_liggghts_advice.h"
-#include "tdem_liggghts_error.h"
+#include "normal_model_tdem_history.h"
 #include "tdem_liggghts_ids.h"
-#include "tdem_liggghts_properties.h"
 
-namespace LIGGGHTS {
-namespace ContactModels {
+namespace tdem {
+namespace liggghts {
 
-template <>
-class NormalModel<TDEM_POWER_LAW> : public NormalModelBase {
- public:
-  NormalModel(LAMMPS* lmp, IContactHistorySetup* hsetup, class ContactModelBase* c)
-      : NormalModelBase(lmp, hsetup, c), advice_owner_(hsetup) {
-    // The kernel's slots (tdem::power_law::history: xi_max, xi_f), adjacent, no sign flip.
-    history_offset_ = hsetup->add_history_value(tdem::power_law::history[0].name, "0");
-    for (int s = 1; s < tdem::power_law::history_size; ++s)
-      hsetup->add_history_value(tdem::power_law::history[s].name, "0");
-    stamp_offset_ = hsetup->add_history_value("tdem_step", "0");  // last step evaluated + 1
-  }
+struct PowerLawBinding {
+  static constexpr const law::Description& description = power_law::description;
+  static constexpr const char* model = "tdem/power_law";
+  static constexpr const char* caller = "model tdem/power_law";
+  static constexpr double stress_strain_exponent = 1.0;
+  static constexpr bool needs_reff = false;
+  static constexpr advice::Law advice = advice::Law::power_law;
+  using Params = power_law::Params<double>;
 
-  ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
-
-  void registerSettings(Settings&) {}
-  void postSettings(IContactHistorySetup*, ContactModelBase*) {}
-
-  void connectToProperties(PropertyRegistry& registry) {
-    static const char* caller = "model tdem/power_law";
-    if (force->cg_active())
-      error->all(FLERR, "model tdem/power_law does not support coarse-graining (cg factor != 1)");
-    const int n = tdem::liggghts::table_types(registry);  // rows filled for the types present
-    coef_.resize(atom->ntypes);
+  static void connect(LAMMPS_NS::LAMMPS* lmp, ::PropertyRegistry& registry, const char* caller,
+                      int n, PairTable<HistoryCoefficients<Params>>& coef) {
     double **al = nullptr, **p = nullptr, **aul = nullptr, **q = nullptr, **kappa = nullptr;
-    registry.registerProperty(tdem::liggghts::kPropLoadingCoefficient, &tdem::liggghts::create_loading_coefficient);
-    registry.registerProperty(tdem::liggghts::kPropLoadingExponent, &tdem::liggghts::create_loading_exponent);
-    registry.registerProperty(tdem::liggghts::kPropUnloadingCoefficient, &tdem::liggghts::create_unloading_coefficient);
-    registry.registerProperty(tdem::liggghts::kPropUnloadingExponentIncrement,
-                              &tdem::liggghts::create_unloading_exponent_increment);
-    registry.registerProperty(tdem::liggghts::kPropStiffnessRatio, &tdem::liggghts::create_stiffness_ratio);
-    registry.connect(tdem::liggghts::kPropLoadingCoefficient, al, caller);
-    registry.connect(tdem::liggghts::kPropLoadingExponent, p, caller);
-    registry.connect(tdem::liggghts::kPropUnloadingCoefficient, aul, caller);
-    registry.connect(tdem::liggghts::kPropUnloadingExponentIncrement, q, caller);
-    registry.connect(tdem::liggghts::kPropStiffnessRatio, kappa, caller);
+    registry.registerProperty(kPropLoadingCoefficient, &create_loading_coefficient);
+    registry.registerProperty(kPropLoadingExponent, &create_loading_exponent);
+    registry.registerProperty(kPropUnloadingCoefficient, &create_unloading_coefficient);
+    registry.registerProperty(kPropUnloadingExponentIncrement, &create_unloading_exponent_increment);
+    registry.registerProperty(kPropStiffnessRatio, &create_stiffness_ratio);
+    registry.connect(kPropLoadingCoefficient, al, caller);
+    registry.connect(kPropLoadingExponent, p, caller);
+    registry.connect(kPropUnloadingCoefficient, aul, caller);
+    registry.connect(kPropUnloadingExponentIncrement, q, caller);
+    registry.connect(kPropStiffnessRatio, kappa, caller);
+    const double nktv2p = lmp->force->nktv2p;
     for (int i = 1; i <= n; ++i)
       for (int j = 1; j <= n; ++j) {
-        PairCoefficients& pc = coef_(i, j);
+        HistoryCoefficients<Params>& pc = coef(i, j);
         // coefficients in force units as model hooke/stiffness converts kn (1 in SI)
-        pc.p = {al[i][j] / force->nktv2p, p[i][j], aul[i][j] / force->nktv2p, q[i][j]};
+        pc.p = {al[i][j] / nktv2p, p[i][j], aul[i][j] / nktv2p, q[i][j]};
         pc.kappa = kappa[i][j];
         try {
-          tdem::power_law::validate(pc.p);
+          power_law::validate(pc.p);
         } catch (const std::exception& ex) {
           char buf[512];
           std::snprintf(buf, sizeof buf, "%s: atom types %d %d: %s", caller, i, j, ex.what());
-          error->all(FLERR, buf);
+          lmp->error->all(FLERR, buf);
         }
       }
-    publish_advice();
   }
 
-  inline double stressStrainExponent() { return 1.; }
-
-  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
-    if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
-    if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
-      tdem::liggghts::zero_distance(lmp, "model tdem/power_law", sidata.i, sidata.j, sidata.is_wall);
-    const PairCoefficients& pc = coef_(sidata.itype, sidata.jtype);
-    double* const hist = &sidata.contact_history[history_offset_];
-    tdem::liggghts::clear_history_of_new_contact(sidata.contact_history[stamp_offset_], hist, tdem::power_law::history_size,
-                                                 static_cast<double>(update->ntimestep),
-                                                 sidata.computeflag && sidata.shearupdate);
-    const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, 0.0};
-    const tdem::NormalResult<double> r =
-        tdem::power_law::force(pc.p, kin, hist, sidata.computeflag && sidata.shearupdate);
-    tdem::liggghts::apply_normal_result(sidata, r.force, r.stiffness, pc.kappa * r.stiffness, 0.0, i_forces, j_forces);
+  static tdem::NormalResult<double> force(const Params& p, const tdem::NormalKinematics<double>& kin, double* hist,
+                                          bool update) {
+    return power_law::force(p, kin, hist, update);
   }
-
-  void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {
-    if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;
-    if (scdata.contact_history)  // contact over
-      for (int s = 0; s < tdem::power_law::history_size; ++s) scdata.contact_history[history_offset_ + s] = 0.0;
+  // kt = kappa dF/dxi of the branch in use
+  static double tangential_stiffness(const HistoryCoefficients<Params>& pc, const tdem::NormalResult<double>& r) {
+    return pc.kappa * r.stiffness;
   }
-  void beginPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
-  void endPass(SurfacesIntersectData&, ForceData&, ForceData&) {}
-
-  // The coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
-  void publish_advice() {
-    namespace ad = tdem::liggghts::advice;
-    ad::Entry e;
-    e.model = this;
-    e.law = ad::Law::power_law;
-    e.name = "tdem/power_law";
-    e.end = tdem::ContactEnd::zero_force;
-    const auto coef = coef_;
-    e.coefficients = [coef](const ad::PairData& d) {
-      ad::Coefficients c;
-      c.power_law = coef(d.itype, d.jtype).p;
-      return c;
-    };
-    ad::publish(advice_owner_, std::move(e));
-  }
-
- private:
-  const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
-  struct PairCoefficients {
-    tdem::power_law::Params<double> p;
-    double kappa;
-  };
-  tdem::liggghts::PairTable<PairCoefficients> coef_;
-  int history_offset_ = 0;
-  int stamp_offset_ = 0;
+  static void advise(advice::Coefficients& c, const Params& p) { c.power_law = p; }
 };
 
+}  // namespace liggghts
+}  // namespace tdem
+
+namespace LIGGGHTS {
+namespace ContactModels {
+template <>
+class NormalModel<TDEM_POWER_LAW> : public TdemHistoryNormalModel<tdem::liggghts::PowerLawBinding> {
+ public:
+  using TdemHistoryNormalModel::TdemHistoryNormalModel;
+};
 }  // namespace ContactModels
 }  // namespace LIGGGHTS
