@@ -21,18 +21,16 @@ using namespace LAMMPS_NS;
 
 namespace tdem_lammps {
 
-namespace {
-
-std::string num(double v) {
-  char buf[64];
-  snprintf(buf, sizeof(buf), "%.10g", v);
-  return buf;
-}
-
-[[noreturn]] void fail(LAMMPS *lmp, const std::string &where, const std::string &what) {
+void law_error(LAMMPS *lmp, const std::string &where, const std::string &what) {
   lmp->error->all(FLERR, where + ": " + what);
   std::abort();  // not reached: error->all does not return
 }
+
+namespace {
+
+std::string num(double v) { return tdem::law::number_text(v); }
+
+[[noreturn]] void fail(LAMMPS *lmp, const std::string &where, const std::string &what) { law_error(lmp, where, what); }
 
 double number(LAMMPS *lmp, const std::string &where, const std::string &keyword, const char *text) {
   char *end = nullptr;
@@ -328,10 +326,6 @@ int parse_extended(LAMMPS *lmp, const std::string &where, bool hertz, int narg, 
 }
 
 
-}  // namespace
-void derive_normal(LAMMPS *lmp, const std::string &where, LawCoeffs &c);
-std::string describe_normal(const LawCoeffs &c);
-namespace {
 
 const char *const TANGENTIAL_LAWS =
     "cundall_strack, haff_werner, linear_spring, walton_braun, mindlin_deresiewicz, "
@@ -595,175 +589,6 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   (void) damping_given;
   derive_law(lmp, where, c);
   return iarg;
-}
-
-void derive_law(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
-  derive_normal(lmp, where, c);
-  // the tangential laws other than cundall_strack: G* and the kernel's own checks
-  if (c.tlaw == TLAW_CUNDALL_STRACK) return;
-  const std::string t = std::string("tangential ") + tangential_name(c.tlaw);
-  try {
-    const auto lim = friction_limit(c.tlimit);
-    if (c.tlaw == TLAW_MINDLIN_DERESIEWICZ || c.tlaw == TLAW_MINDLIN_NO_SLIP || c.tlaw == TLAW_DI_RENZO)
-      c.t_gstar = tdem::tangential::effective_shear_modulus_from_E(c.tE1, c.tnu1, c.tE2, c.tnu2);
-    if (c.tlaw == TLAW_HAFF_WERNER) tdem::haff_werner::validate({c.t_gammat, c.t_mu, lim});
-    else if (c.tlaw == TLAW_LINEAR_SPRING)
-      tdem::linear_spring::validate({c.t_kt, c.t_kappa, c.t_gammat, c.t_mu, lim, slip_reset(c.slip)});
-    else if (c.tlaw == TLAW_WALTON_BRAUN)
-      tdem::walton_braun_tangential::validate({c.t_kt, c.t_kappa, c.t_mu, lim});
-    else if (c.tlaw == TLAW_MINDLIN_DERESIEWICZ) tdem::mindlin_deresiewicz::validate({c.t_gstar, c.t_mu, lim});
-    else if (c.tlaw == TLAW_MINDLIN_NO_SLIP)
-      tdem::mindlin_no_slip::validate({c.t_gstar, c.t_ratio, c.t_mu, lim, slip_reset(c.slip)});
-    else tdem::di_renzo::validate({c.t_gstar, c.t_mu, lim});
-  } catch (const std::exception &ex) {
-    fail(lmp, where, t + ": " + ex.what());
-  }
-}
-
-void derive_normal(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
-  if (c.mode == MODE_EXT_HERTZ || c.mode == MODE_EXT_LINEAR) {
-    const std::string law = c.mode == MODE_EXT_HERTZ ? "extended_hertz" : "extended_linear";
-    try {
-      if (c.mode == MODE_EXT_HERTZ) {
-        c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
-        tdem::extended::validate(tdem::extended::HertzParams{tdem::hertz::stiffness(c.estar, 1.0),
-                                                              c.ext.e_fit, c.ext.range});
-      } else {
-        tdem::extended::validate(c.ext);
-      }
-      // the first-touch conversion must succeed over the whole clamp range (the kernel's
-      // first-touch path is noexcept and would give a force-free contact otherwise)
-      for (int k = 0; k <= 8; ++k) {
-        const double v = c.ext.range.v_min *
-                         std::pow(c.ext.range.v_max / c.ext.range.v_min, k / 8.0);
-        if (c.mode == MODE_EXT_HERTZ) {
-          const double a = tdem::extended::hertz_alpha(contact_end(c.end), c.ext.e_fit, c.ext.range, v);
-          if (!(a >= 0.0) || !std::isfinite(a)) throw std::domain_error("no finite damping alpha at v0 = " + num(v));
-        } else {
-          const auto lc = tdem::extended::linear_coefficients(contact_end(c.end), c.ext, 1.0, v);
-          if (!(lc.k > 0.0) || !std::isfinite(lc.k) || !(lc.gamma >= 0.0) || !std::isfinite(lc.gamma))
-            throw std::domain_error("no finite stiffness and damping at v0 = " + num(v));
-        }
-      }
-    } catch (const std::exception &ex) {
-      fail(lmp, where, "normal " + law + ": " + ex.what());
-    }
-    return;
-  }
-  if (c.mode == MODE_THORNTON) {
-    try {
-      c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
-    } catch (const std::exception &ex) {
-      fail(lmp, where, std::string("normal thornton: ") + ex.what());
-    }
-    return;
-  }
-  if (c.mode == MODE_HERTZ) {
-    try {
-      c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
-      if (c.hdamp == HDAMP_TSUJI) c.hgamma = tdem::hertz::tsuji_alpha_from_restitution(c.he, contact_end(c.end));
-    } catch (const std::exception &ex) {
-      fail(lmp, where, std::string("normal hertz: ") + ex.what());
-    }
-    if (!(c.estar > 0.0) || !std::isfinite(c.estar) || !(c.hgamma >= 0.0) || !std::isfinite(c.hgamma))
-      fail(lmp, where, "normal hertz: the parameters give no finite E* and damping");
-    return;
-  }
-  if (c.mode != MODE_RESTITUTION) return;
-  try {
-    const auto rates = tdem::lsd::rates_from_restitution_and_time(c.e, c.tc, contact_end(c.end));
-    c.k_per_mass = rates.k_per_mass;
-    c.gamma_per_mass = rates.gamma_per_mass;
-  } catch (const std::exception &ex) {
-    fail(lmp, where, std::string("normal lsd restitution: ") + ex.what());
-  }
-  if (!(c.k_per_mass > 0.0) || !std::isfinite(c.k_per_mass) || !(c.gamma_per_mass >= 0.0) ||
-      !std::isfinite(c.gamma_per_mass))
-    fail(lmp, where,
-         "normal lsd restitution E = " + num(c.e) + ", TC = " + num(c.tc) +
-             " gives no finite stiffness and damping");
-}
-
-const char *tangential_name(int tlaw) {
-  static const char *const names[] = {"cundall_strack", "haff_werner", "linear_spring", "walton_braun",
-                                      "mindlin_deresiewicz", "mindlin_no_slip", "di_renzo"};
-  return tlaw >= 0 && tlaw < TLAW_COUNT ? names[tlaw] : "unknown";
-}
-
-std::string describe_rolling(const LawCoeffs &c) {
-  if (!c.roll) return "";
-  return " rolling sds kr=" + num(c.rp.kr) + " gammar=" + num(c.rp.gammar) + " mur=" + num(c.rp.mur);
-}
-
-std::string describe_law(const LawCoeffs &c) {
-  std::string s = describe_normal(c) + describe_rolling(c);
-  if (c.tlaw == TLAW_CUNDALL_STRACK) return s;
-  // replace the cundall_strack part by the tangential law in use
-  const size_t at = s.find(" tangential cundall_strack");
-  const size_t opt = s.find(" limit_force ");
-  std::string t = std::string(" tangential ") + tangential_name(c.tlaw);
-  if (c.tlaw == TLAW_HAFF_WERNER) t += " gammat=" + num(c.t_gammat);
-  else if (c.tlaw == TLAW_LINEAR_SPRING || c.tlaw == TLAW_WALTON_BRAUN) {
-    t += " kt=" + num(c.t_kt) + " kappa=" + num(c.t_kappa) + " (k_t = kt + kappa k_n)";
-    if (c.tlaw == TLAW_LINEAR_SPRING) t += " gammat=" + num(c.t_gammat);
-  } else {
-    t += " E1=" + num(c.tE1) + " nu1=" + num(c.tnu1) + " E2=" + num(c.tE2) + " nu2=" + num(c.tnu2) +
-         " (G*=" + num(c.t_gstar) + ")";
-    if (c.tlaw == TLAW_MINDLIN_NO_SLIP) t += " ratio=" + num(c.t_ratio) + " (eta_t = ratio gamma_n)";
-  }
-  t += " mu=" + num(c.t_mu) + " friction_limit " + (c.tlimit ? "positive_normal" : "absolute");
-  if (at != std::string::npos && opt != std::string::npos && opt > at) s = s.substr(0, at) + t + s.substr(opt);
-  return s;
-}
-
-std::string describe_normal(const LawCoeffs &c) {
-  std::string s = "normal lsd ";
-  auto fit = [](const tdem::fits::Fit &f, char what) {
-    std::string t = tdem::fits::to_string(f.form);
-    for (int k = 0; k < tdem::fits::coefficient_count(f.form, what); ++k) t += " " + num(f.c[k]);
-    return t;
-  };
-  if (c.mode == MODE_POWER_LAW) {
-    s = "normal power_law al=" + num(c.pl.a_load) + " p=" + num(c.pl.p) + " aul=" +
-        num(c.pl.a_unload) + " q=" + num(c.pl.q) + " tangential cundall_strack kappa=" +
-        num(c.kappa) + " (kt = kappa dF/dxi) mu=" + num(c.mu);
-  } else if (c.mode == MODE_EXT_LINEAR) {
-    s = "normal extended_linear e_fit " + fit(c.ext.e_fit, 'e') + " tc_fit " + fit(c.ext.tc_fit, 't') +
-        " v_min=" + num(c.ext.range.v_min) + " v_max=" + num(c.ext.range.v_max) +
-        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa k(v0)) mu=" + num(c.mu);
-  } else if (c.mode == MODE_EXT_HERTZ) {
-    s = "normal extended_hertz E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
-        " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") e_fit " + fit(c.ext.e_fit, 'e') +
-        " v_min=" + num(c.ext.range.v_min) + " v_max=" + num(c.ext.range.v_max) +
-        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa dF/dxi) mu=" + num(c.mu);
-  } else if (c.mode == MODE_THORNTON) {
-    s = "normal thornton E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
-        " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") py=" + num(c.th_py) +
-        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa 2 E* a) mu=" + num(c.mu);
-  } else if (c.mode == MODE_WALTON_BRAUN) {
-    s = "normal walton_braun kl=" + num(c.wb_kl) + " ku=" + num(c.wb_ku) + " s=" + num(c.wb_s) +
-        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa kl) mu=" + num(c.mu);
-  } else if (c.mode == MODE_HERTZ) {
-    static const char *const dn[] = {"linear", "kuwabara_kono", "tsuji", "general"};
-    s = "normal hertz E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
-        " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") damping " + dn[c.hdamp & 3];
-    if (c.hdamp == HDAMP_TSUJI) s += " e=" + num(c.he) + " (alpha=" + num(c.hgamma) + ")";
-    else if (c.hdamp == HDAMP_GENERAL) s += " theta=" + num(c.htheta) + " c=" + num(c.hgamma);
-    else s += " gamma=" + num(c.hgamma);
-    s += " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa 2 E* a) mu=" + num(c.mu);
-  } else if (c.mode == MODE_RESTITUTION) {
-    s += "restitution e=" + num(c.e) + " tc=" + num(c.tc) + " (k/m*=" + num(c.k_per_mass) +
-         " gamma/m*=" + num(c.gamma_per_mass) + ") tangential cundall_strack kappa=" +
-         num(c.kappa) + " mu=" + num(c.mu);
-  } else {
-    s += "stiffness kn=" + num(c.kn) + " gamman=" + num(c.gamman) +
-         (c.mode == MODE_STIFFNESS_MASS ? " (x m*)" : " (absolute)") +
-         " tangential cundall_strack kt=" + num(c.kt) + " gammat=" + num(c.gammat) +
-         (c.mode == MODE_STIFFNESS_MASS ? " (x m*)" : "") + " mu=" + num(c.mu);
-  }
-  s += std::string(" limit_force ") + (c.end ? "yes" : "no") + " slip " +
-       (c.slip ? "spring_dashpot" : "spring");
-  return s;
 }
 
 }  // namespace tdem_lammps

@@ -232,6 +232,9 @@ inline tdem::cundall_strack::SlipRule slip_rule(int slip) {
 int parse_law(LAMMPS_NS::LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
               bool stop_at_unknown, LawCoeffs &out);
 
+// The error of a law's input: error->all(where + ": " + what); does not return.
+[[noreturn]] void law_error(LAMMPS_NS::LAMMPS *lmp, const std::string &where, const std::string &what);
+
 // Derive the per-unit-mass rates of restitution mode; errors through error->all.
 void derive_law(LAMMPS_NS::LAMMPS *lmp, const std::string &where, LawCoeffs &c);
 

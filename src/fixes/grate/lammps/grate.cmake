@@ -2,5 +2,6 @@
 # tdem LAMMPS module 'grate': sources of its styles (included by src/pair_styles/lammps/CMakeLists.txt)
 list(APPEND TDEM_LAMMPS_STYLE_SOURCES
      ${CMAKE_CURRENT_LIST_DIR}/grate_styles.cpp
-     ${CMAKE_CURRENT_LIST_DIR}/fix_tdem_grate.cpp)
+     ${CMAKE_CURRENT_LIST_DIR}/fix_tdem_grate.cpp
+     ${CMAKE_CURRENT_LIST_DIR}/fix_tdem_grate_setup.cpp)
 list(APPEND TDEM_LAMMPS_MODULE_INCLUDES ${CMAKE_CURRENT_LIST_DIR})
