@@ -55,12 +55,15 @@ struct Description {
   int count;  // entries of params
   const HistorySlot* history;
   int history_size;
+  // the count message of a materials law: false "needs 3 values (E NU MU: both partners of one
+  // material) or 5 values (E1 NU1 E2 NU2 MU)", true "needs 3 or 5 values (E NU [E2 NU2] MU)"
+  bool bracketed = false;
 };
 
 template <int N>
 constexpr Description describe(const char* kind, const char* name, bool materials, const Parameter (&p)[N],
-                               const HistorySlot* history, int history_size) {
-  return {kind, name, materials, p, N, history, history_size};
+                               const HistorySlot* history, int history_size, bool bracketed = false) {
+  return {kind, name, materials, p, N, history, history_size, bracketed};
 }
 
 // The material pair's four values (index 0..3 of a materials law's value list).
@@ -99,9 +102,10 @@ inline int value_index(const Description& d, int n, int k) {
   return k;
 }
 
-// "KL KUL [S]", "E NU PY"; with materials and two = true: "E1 NU1 E2 NU2 PY".
-inline std::string syntax(const Description& d, bool two = false) {
-  std::string s = d.materials ? (two ? "E1 NU1 E2 NU2" : "E NU") : "";
+// "KL KUL [S]", "E NU PY"; with materials and two = true: "E1 NU1 E2 NU2 PY"; bracketed:
+// "E NU [E2 NU2] MU".
+inline std::string syntax(const Description& d, bool two = false, bool bracketed = false) {
+  std::string s = d.materials ? (bracketed ? "E NU [E2 NU2]" : two ? "E1 NU1 E2 NU2" : "E NU") : "";
   for (int k = 0; k < d.count; ++k) {
     if (!s.empty()) s += ' ';
     s += d.params[k].optional ? std::string("[") + d.params[k].name + "]" : d.params[k].name;
@@ -113,6 +117,9 @@ inline std::string syntax(const Description& d, bool two = false) {
 inline std::string count_message(const Description& d, int n) {
   const std::string head = std::string(d.kind) + " " + d.name + " needs ";
   const int a = required_words(d);
+  if (d.materials && d.bracketed)
+    return head + std::to_string(a) + " or " + std::to_string(a + 2) + " values (" + syntax(d, false, true) +
+           "), got " + std::to_string(n);
   if (d.materials)
     return head + std::to_string(a) + " values (" + syntax(d) + ": both partners of one material) or " +
            std::to_string(a + 2) + " values (" + syntax(d, true) + "), got " + std::to_string(n);

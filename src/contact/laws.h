@@ -4,7 +4,7 @@
 // added here with its Description is known to that parser without further edits.
 //
 // The laws with keyword forms (lsd stiffness|restitution, hertz with its damping members, the
-// extended laws with their fits) and the tangential laws are not in the list yet: their hosts
+// extended laws with their fits, tangential cundall_strack) are not in the lists yet: their hosts
 // parse them by hand.
 #pragma once
 
@@ -12,6 +12,12 @@
 #include "normal/power_law_hysteresis.h"
 #include "normal/thornton.h"
 #include "normal/walton_braun.h"
+#include "tangential/di_renzo.h"
+#include "tangential/haff_werner.h"
+#include "tangential/linear_spring.h"
+#include "tangential/mindlin_deresiewicz.h"
+#include "tangential/mindlin_no_slip.h"
+#include "tangential/walton_braun_tangential.h"
 
 #include <cstring>
 
@@ -22,6 +28,12 @@ inline constexpr const Description* normal_laws[] = {
     &walton_braun::description,
     &thornton::description,
     &power_law::description,
+};
+
+// The tangential laws other than cundall_strack (whose forms depend on the normal law).
+inline constexpr const Description* tangential_laws[] = {
+    &haff_werner::description,         &linear_spring::description,   &walton_braun_tangential::description,
+    &mindlin_deresiewicz::description, &mindlin_no_slip::description, &di_renzo::description,
 };
 
 // The law of `name` in the list, or nullptr.

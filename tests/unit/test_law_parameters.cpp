@@ -117,3 +117,30 @@ TEST(LawParameters, EveryListedLawIsConsistent) {
   EXPECT_EQ(tdem::thornton::description.history, tdem::thornton::history);
   EXPECT_EQ(tdem::power_law::description.history_size, tdem::power_law::history_size);
 }
+
+TEST(LawParameters, TangentialLaws) {
+  const auto& md = tdem::mindlin_deresiewicz::description;
+  EXPECT_EQ(law::count_message(md, 2), "tangential mindlin_deresiewicz needs 3 or 5 values (E NU [E2 NU2] MU), got 2");
+  EXPECT_EQ(law::count_message(tdem::mindlin_no_slip::description, 3),
+            "tangential mindlin_no_slip needs 4 or 6 values (E NU [E2 NU2] RATIO MU), got 3");
+  EXPECT_EQ(law::count_message(tdem::haff_werner::description, 1), "tangential haff_werner needs 2 values (GAMMAT MU), got 1");
+  const double hw[2] = {-20.0, 0.5};
+  EXPECT_EQ(law::check(tdem::haff_werner::description, hw),
+            "tangential haff_werner GAMMAT (damping coefficient, mass/time) = -20 must be >= 0");
+  // E NU RATIO MU with one material: RATIO and MU are values 4 and 5
+  const double w[4] = {7e10, 0.3, 0.5, 0.4};
+  double v[6];
+  law::expand(tdem::mindlin_no_slip::description, w, 4, v);
+  EXPECT_EQ(v[2], 7e10);
+  EXPECT_EQ(v[3], 0.3);
+  EXPECT_EQ(v[4], 0.5);
+  EXPECT_EQ(v[5], 0.4);
+  std::set<std::string> names;
+  for (const law::Description* d : law::tangential_laws) {
+    SCOPED_TRACE(d->name);
+    EXPECT_TRUE(names.insert(d->name).second);
+    EXPECT_STREQ(d->kind, "tangential");
+    EXPECT_STREQ(law::parameter(*d, law::value_count(*d) - 1).name, "MU");  // the friction coefficient last
+  }
+  EXPECT_EQ(names.size(), 6u);
+}

@@ -12,6 +12,7 @@
 #pragma once
 
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "common.h"
 #include "linear_spring.h"
 #include "mindlin_no_slip.h"
@@ -28,6 +29,14 @@ struct Params {
 
 inline constexpr HistorySlot history[] = {{"spring_x", true}, {"spring_y", true}, {"spring_z", true}};
 inline constexpr int history_size = 3;
+
+// The input line `tangential di_renzo E NU [E2 NU2] ...` (src/contact/law_parameters.h); the values
+// are E1 NU1 E2 NU2, then the law's own.
+inline constexpr law::Parameter parameters[] = {
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description description =
+    law::describe("tangential", "di_renzo", true, parameters, history, history_size, true);
 
 template <class T>
 TDEM_KERNEL T stiffness(const Params<T>& p, const tangential::TangentialKinematics<T>& k) noexcept {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "common.h"
 
 namespace tdem {
@@ -24,6 +25,14 @@ struct Params {
 
 inline constexpr HistorySlot history[] = {{"unused", false}};  // no memory: history_size = 0
 inline constexpr int history_size = 0;
+
+// The input line `tangential haff_werner ...` (src/contact/law_parameters.h).
+inline constexpr law::Parameter parameters[] = {
+    {"GAMMAT", "damping coefficient, mass/time", "kg/s", law::Bound::non_negative},
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description description =
+    law::describe("tangential", "haff_werner", false, parameters, history, history_size);
 
 template <class T>
 TDEM_KERNEL bool force(const Params<T>& p, const tangential::TangentialKinematics<T>& k, T* /*hist*/,

@@ -27,6 +27,7 @@
 #pragma once
 
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "common.h"
 
 namespace tdem {
@@ -110,6 +111,16 @@ inline Params<double> spring_dashpot(double kt, double gammat, double mu,
 
 inline constexpr HistorySlot history[] = {{"spring_x", true}, {"spring_y", true}, {"spring_z", true}};
 inline constexpr int history_size = 3;
+
+// The input line `tangential linear_spring ...` (src/contact/law_parameters.h).
+inline constexpr law::Parameter parameters[] = {
+    {"KT", "constant stiffness, force/length", "N/m", law::Bound::non_negative},
+    {"KAPPA", "k_t/k_n", "1", law::Bound::non_negative},
+    {"GAMMAT", "damping coefficient, mass/time", "kg/s", law::Bound::non_negative},
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description description =
+    law::describe("tangential", "linear_spring", false, parameters, history, history_size);
 
 template <class T>
 TDEM_KERNEL T stiffness(const Params<T>& p, const tangential::TangentialKinematics<T>& k) noexcept {

@@ -91,6 +91,7 @@
 #pragma once
 
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "common.h"
 #include "masing.h"
 
@@ -111,6 +112,14 @@ inline constexpr HistorySlot history[] = {
     {"reversal_1", false},  {"reversal_2", false},  {"reversal_3", false},  {"reversal_4", false},
     {"limit_prev", false},  {"k0_prev", false}};
 inline constexpr int history_size = 14;
+
+// The input line `tangential mindlin_deresiewicz E NU [E2 NU2] ...` (src/contact/law_parameters.h); the values
+// are E1 NU1 E2 NU2, then the law's own.
+inline constexpr law::Parameter parameters[] = {
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description description =
+    law::describe("tangential", "mindlin_deresiewicz", true, parameters, history, history_size, true);
 // direction: s = +-1 of the current branch (0: fresh contact); reversals: m = 0..4 (stored as a
 // real); reversal_j: the loads r_j; limit_prev: F_lim of the previous step; k0_prev: K0 of the
 // previous step.

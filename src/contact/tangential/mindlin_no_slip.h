@@ -13,6 +13,7 @@
 #pragma once
 
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "common.h"
 #include "linear_spring.h"
 
@@ -30,6 +31,15 @@ struct Params {
 
 inline constexpr HistorySlot history[] = {{"spring_x", true}, {"spring_y", true}, {"spring_z", true}};
 inline constexpr int history_size = 3;
+
+// The input line `tangential mindlin_no_slip E NU [E2 NU2] ...` (src/contact/law_parameters.h); the values
+// are E1 NU1 E2 NU2, then the law's own.
+inline constexpr law::Parameter parameters[] = {
+    {"RATIO", "eta_t/gamma_n", "1", law::Bound::non_negative},
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description description =
+    law::describe("tangential", "mindlin_no_slip", true, parameters, history, history_size, true);
 
 // The no-slip stiffness 8 G* sqrt(R* xi) (0 without overlap).
 template <class T>

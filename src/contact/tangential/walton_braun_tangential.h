@@ -30,6 +30,7 @@
 #pragma once
 
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "common.h"
 #include "masing.h"
 
@@ -48,6 +49,15 @@ inline constexpr HistorySlot history[] = {{"force_x", true}, {"force_y", true}, 
                                           {"axis_x", true},  {"axis_y", true},  {"axis_z", true},
                                           {"t_star", false}, {"direction", false}, {"k0_prev", false}};
 inline constexpr int history_size = 9;
+
+// The input line `tangential walton_braun ...` (src/contact/law_parameters.h).
+inline constexpr law::Parameter parameters[] = {
+    {"KT", "constant stiffness, force/length", "N/m", law::Bound::non_negative},
+    {"KAPPA", "k_t/k_n", "1", law::Bound::non_negative},
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description description =
+    law::describe("tangential", "walton_braun", false, parameters, history, history_size);
 enum Slot { force_slot = 0, axis_slot = 3, t_star_slot = 6, direction_slot = 7, k0_slot = 8 };
 
 template <class T>

@@ -332,70 +332,40 @@ const char *const TANGENTIAL_LAWS =
     "mindlin_no_slip, di_renzo";
 
 // tangential haff_werner | linear_spring | walton_braun | mindlin_deresiewicz | mindlin_no_slip |
-// di_renzo with their values, at arg[iarg] (the first value); returns the next index.
+// di_renzo with their values, at arg[iarg] (the first value): the laws of the list of
+// src/contact/laws.h, read and checked from their Description; returns the next index.
 int parse_tangential(LAMMPS *lmp, const std::string &where, const std::string &name, int narg,
                      char **arg, int iarg, LawCoeffs &c) {
-  const int n = available(narg, arg, iarg);
+  namespace law = tdem::law;
+  const law::Description *d = law::find(law::tangential_laws, name.c_str());
+  if (!d) fail(lmp, where, "tangential law '" + name + "' is unknown; allowed: " + TANGENTIAL_LAWS);
+  double v[law::MATERIAL_VALUES + 8];
+  iarg = parse_described(lmp, where, *d, narg, arg, iarg, v);
   const std::string t = "tangential " + name + " ";
-  auto val = [&](int k, const char *key) { return number(lmp, where, t + key, arg[iarg + k]); };
-  auto count = [&](const std::string &names, int a, int b) {
-    if (n != a && n != b)
-      fail(lmp, where,
-           "tangential " + name + " needs " + std::to_string(a) +
-               (b != a ? " or " + std::to_string(b) : std::string()) + " values (" + names +
-               "), got " + std::to_string(n));
-  };
-  if (name == "haff_werner") {
+  if (d == &tdem::haff_werner::description) {
     c.tlaw = TLAW_HAFF_WERNER;
-    count("GAMMAT MU", 2, 2);
-    c.t_gammat = val(0, "GAMMAT");
-    c.t_mu = val(1, "MU");
-    non_negative(lmp, where, t + "GAMMAT (damping coefficient, mass/time)", c.t_gammat);
-  } else if (name == "linear_spring" || name == "walton_braun") {
-    const bool lin = name == "linear_spring";
+    c.t_gammat = v[0], c.t_mu = v[1];
+  } else if (d == &tdem::linear_spring::description || d == &tdem::walton_braun_tangential::description) {
+    const bool lin = d == &tdem::linear_spring::description;
     c.tlaw = lin ? TLAW_LINEAR_SPRING : TLAW_WALTON_BRAUN;
-    count(lin ? "KT KAPPA GAMMAT MU" : "KT KAPPA MU", lin ? 4 : 3, lin ? 4 : 3);
-    c.t_kt = val(0, "KT");
-    c.t_kappa = val(1, "KAPPA");
-    if (lin) c.t_gammat = val(2, "GAMMAT");
-    c.t_mu = val(lin ? 3 : 2, "MU");
-    non_negative(lmp, where, t + "KT (constant stiffness, force/length)", c.t_kt);
-    non_negative(lmp, where, t + "KAPPA (k_t/k_n)", c.t_kappa);
+    c.t_kt = v[0], c.t_kappa = v[1];
+    if (lin) c.t_gammat = v[2];
+    c.t_mu = v[lin ? 3 : 2];
     if (!(c.t_kt > 0.0 || c.t_kappa > 0.0))
       fail(lmp, where, t + "KT = " + num(c.t_kt) + ", KAPPA = " + num(c.t_kappa) +
                            ": the stiffness KT + KAPPA k_n must be > 0 (give KT > 0 or KAPPA > 0)");
-    if (lin) non_negative(lmp, where, t + "GAMMAT (damping coefficient, mass/time)", c.t_gammat);
-  } else if (name == "mindlin_deresiewicz" || name == "mindlin_no_slip" || name == "di_renzo") {
-    const bool tsuji = name == "mindlin_no_slip";
-    c.tlaw = tsuji ? TLAW_MINDLIN_NO_SLIP
-             : name == "di_renzo" ? TLAW_DI_RENZO
-                                  : TLAW_MINDLIN_DERESIEWICZ;
-    const int base = tsuji ? 4 : 3;
-    count(tsuji ? "E NU [E2 NU2] RATIO MU" : "E NU [E2 NU2] MU", base, base + 2);
-    c.tE1 = val(0, "E");
-    positive(lmp, where, t + "E (Young's modulus)", c.tE1);
-    c.tnu1 = poisson(lmp, where, t + "NU (Poisson ratio)", arg[iarg + 1]);
-    if (n == base + 2) {
-      c.tE2 = val(2, "E2");
-      positive(lmp, where, t + "E2 (Young's modulus)", c.tE2);
-      c.tnu2 = poisson(lmp, where, t + "NU2 (Poisson ratio)", arg[iarg + 3]);
-    } else {
-      c.tE2 = c.tE1;
-      c.tnu2 = c.tnu1;
-    }
-    if (tsuji) {
-      c.t_ratio = val(n - 2, "RATIO");
-      non_negative(lmp, where, t + "RATIO (eta_t/gamma_n)", c.t_ratio);
-    }
-    c.t_mu = val(n - 1, "MU");
-  } else {
-    fail(lmp, where, "tangential law '" + name + "' is unknown; allowed: " + TANGENTIAL_LAWS);
+  } else {  // the Mindlin-type laws: E1 NU1 E2 NU2 [RATIO] MU
+    c.tlaw = d == &tdem::mindlin_no_slip::description ? TLAW_MINDLIN_NO_SLIP
+             : d == &tdem::di_renzo::description      ? TLAW_DI_RENZO
+                                                      : TLAW_MINDLIN_DERESIEWICZ;
+    c.tE1 = v[0], c.tnu1 = v[1], c.tE2 = v[2], c.tnu2 = v[3];
+    if (c.tlaw == TLAW_MINDLIN_NO_SLIP) c.t_ratio = v[4];
+    c.t_mu = v[law::value_count(*d) - 1];
   }
-  non_negative(lmp, where, t + "MU (friction coefficient)", c.t_mu);
   unusual(lmp, where, t, tdem::usual::friction(c.t_mu));
   if (c.tlaw == TLAW_LINEAR_SPRING || c.tlaw == TLAW_WALTON_BRAUN)
     unusual(lmp, where, t, tdem::usual::stiffness_ratio(c.t_kappa));
-  return iarg + n;
+  return iarg;
 }
 }  // namespace
 
