@@ -98,51 +98,26 @@ struct HertzLaw {
   void reset() {}
 };
 
-struct WaltonBraunLaw {
-  walton_braun::Params<double> p{};
-  double hist[walton_braun::history_size] = {0.0};
+// A normal law that is a unit (src/contact/law_unit.h): its kernel with a history of its own.
+template <class U>
+struct UnitLaw {
+  typename U::Params p{};
+  double hist[U::description.history_size] = {};
 
   NormalResult<double> force(double xi, double xi_dot, double meff, double reff, bool update) {
-    return walton_braun::force(p, NormalKinematics<double>{std::max(xi, 0.0), xi_dot, meff, reff}, hist, update);
+    return U::force(p, NormalKinematics<double>{std::max(xi, 0.0), xi_dot, meff, reff}, hist, update);
   }
-  ContactEnd end() const { return ContactEnd::zero_force; }
+  ContactEnd end() const { return U::end; }
   double start_overlap() const { return 0.0; }
-  double contact_time_estimate(double meff, double, double v0) const {
-    return M_PI * std::sqrt(meff / p.k_load);
-  }
-  void reset() { std::fill(std::begin(hist), std::end(hist), 0.0); }
-};
-
-struct ThorntonLaw {
-  thornton::Params<double> p{};
-  double hist[thornton::history_size] = {0.0, 0.0};
-
-  NormalResult<double> force(double xi, double xi_dot, double meff, double reff, bool update) {
-    return thornton::force(p, NormalKinematics<double>{std::max(xi, 0.0), xi_dot, meff, reff}, hist, update);
-  }
-  ContactEnd end() const { return ContactEnd::zero_force; }
-  double start_overlap() const { return 0.0; }
-  // Hertz's t_c = 2.943 xi_max / v0 with the elastic-plastic largest overlap.
   double contact_time_estimate(double meff, double reff, double v0) const {
-    return hertz::contact_time_constant() * thornton::max_overlap(p, reff, meff, v0) / v0;
+    return U::contact_time_estimate(p, meff, reff, v0);
   }
   void reset() { std::fill(std::begin(hist), std::end(hist), 0.0); }
 };
 
-struct PowerLawLaw {
-  power_law::Params<double> p{};
-  double hist[power_law::history_size] = {0.0};
-
-  NormalResult<double> force(double xi, double xi_dot, double meff, double reff, bool update) {
-    return power_law::force(p, NormalKinematics<double>{std::max(xi, 0.0), xi_dot, meff, reff}, hist, update);
-  }
-  ContactEnd end() const { return ContactEnd::zero_force; }
-  double start_overlap() const { return 0.0; }
-  double contact_time_estimate(double meff, double, double v0) const {
-    return 2.0 * power_law::max_overlap(p, meff, v0) / v0 * power_law::shape_integral(p.p);
-  }
-  void reset() { std::fill(std::begin(hist), std::end(hist), 0.0); }
-};
+using WaltonBraunLaw = UnitLaw<walton_braun::Law>;
+using ThorntonLaw = UnitLaw<thornton::Law>;
+using PowerLawLaw = UnitLaw<power_law::Law>;
 
 // The extended laws take their coefficients at the first evaluation (the touch, xi' = v0),
 // which integrate() makes with update = true.

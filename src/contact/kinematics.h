@@ -45,4 +45,12 @@ struct HistorySlot {
   bool flips_sign;
 };
 
+// How a contact ends: where the overlap returns to zero, or where the force does (the force
+// is clipped at zero; the contact may end with an overlap left).
+enum class ContactEnd { zero_overlap, zero_force };
+
+inline const char* to_string(ContactEnd e) {
+  return e == ContactEnd::zero_overlap ? "zero_overlap" : "zero_force";
+}
+
 }  // namespace tdem

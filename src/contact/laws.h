@@ -3,12 +3,18 @@
 // A host parses, checks and reports the values of every law in this list in one place; a law
 // added here with its Description is known to that parser without further edits.
 //
+// The normal laws that are units (src/contact/law_unit.h) are listed once, in normal_units: a law
+// added there is parsed, checked, evaluated, restarted and advised on by both hosts, tdem-collide
+// and the advice with no other edit (LIGGGHTS also needs its model id: one line in
+// src/pair_styles/liggghts/tdem_liggghts_units.h).
+//
 // The laws with keyword forms (lsd stiffness|restitution, hertz with its damping members, the
 // extended laws with their fits, tangential cundall_strack) are not in the lists yet: their hosts
 // parse them by hand.
 #pragma once
 
 #include "law_parameters.h"
+#include "law_unit.h"
 #include "normal/power_law_hysteresis.h"
 #include "normal/thornton.h"
 #include "normal/walton_braun.h"
@@ -24,11 +30,12 @@
 namespace tdem {
 namespace law {
 
-inline constexpr const Description* normal_laws[] = {
-    &walton_braun::description,
-    &thornton::description,
-    &power_law::description,
-};
+// The normal laws as units, in the order of their LAMMPS law numbers (stable only within one
+// build: restart files store the law's name).
+using normal_units = Units<walton_braun::Law, thornton::Law, power_law::Law>;
+
+// Their descriptions.
+inline constexpr const auto& normal_laws = normal_units::descriptions;
 
 // The tangential laws other than cundall_strack (whose forms depend on the normal law).
 inline constexpr const Description* tangential_laws[] = {

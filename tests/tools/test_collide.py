@@ -142,6 +142,20 @@ if j:
     check("thornton v_y", j["parameters"]["v_y"], vy, 1e-9)
     check("thornton energy", j["dissipated_energy"], 0.5 * mh * (1 - e_th**2), 1e-6)
 
+# ---- --params: a unit law's input line as pair_coeff takes it (issue 19), the same closed forms
+j = collide("--law walton_braun --params 1e5,1.5625e5 --m1 0.01 --wall --v0 1")
+if j:
+    check("walton_braun --params e", j["e"], 0.8, 1e-6)
+    check("walton_braun --params t_c", j["contact_time"], 8.94113e-4, 1e-6)
+    check("walton_braun --params KUL echoed", j["parameters"]["KUL"], 1.5625e5, 1e-15)
+j = collide(f"--law thornton --params {E},{nu},{py} --R1 {R} --rho {rho} --wall --v0 1")
+if j:
+    check("thornton --params e", j["e"], e_th, 1e-6)
+# power law with q = 0: e = (a_l / a_ul)^(1/(2p)) for every v0
+j = collide("--law power_law --params 1e7,1.5,4e7 --m1 0.01 --wall --v0 1")
+if j:
+    check("power_law --params e", j["e"], (1e7 / 4e7) ** (1 / 3.0), 1e-6)
+
 # ---- continuous potential: conservative, closest approach as asked
 j = collide("--law continuous_potential --R1 0.005 --m1 0.01 --wall --x-min 0.00499 --v0 1")
 if j:
@@ -278,6 +292,15 @@ bad = [
     ("--law walton_braun --kl 1e5 --kul 1e4 --m1 0.01 --wall --v0 1", "--kul"),
     ("--law walton_braun --kl 1e5 --m1 0.01 --wall --v0 1 --end zero_overlap", "--end"),
     ("--law thornton --E 2e11 --nu 0.3 --R1 0.005 --rho 7850 --wall --v0 1 --e 1", "--e"),
+    ("--law walton_braun --params 1e5 --m1 0.01 --wall --v0 1",
+     "normal walton_braun needs 2 or 3 values (KL KUL [S]), got 1"),
+    ("--law walton_braun --params 1e5,5e4 --m1 0.01 --wall --v0 1",
+     "KUL (unloading stiffness) = 50000 is outside the allowed range [KL, inf)"),
+    ("--law thornton --params 2e11,0.3,-1 --R1 0.005 --rho 7850 --wall --v0 1",
+     "PY (limiting contact pressure) = -1 must be > 0"),
+    ("--law walton_braun --params 1e5,abc --m1 0.01 --wall --v0 1", "--params: 'abc' is not a number"),
+    ("--law lsd --params 1e5,1 --m1 0.01 --wall --v0 1", "--params"),
+    ("--law walton_braun --params 1e5,2e5 --kl 1e5 --m1 0.01 --wall --v0 1", "--kl"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --steps 0", "--steps"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --steps 2.5", "--steps"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --rho 7850", "--rho"),

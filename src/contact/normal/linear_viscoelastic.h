@@ -22,11 +22,7 @@
 
 namespace tdem {
 
-enum class ContactEnd { zero_overlap, zero_force };
-
-inline const char* to_string(ContactEnd e) {
-  return e == ContactEnd::zero_overlap ? "zero_overlap" : "zero_force";
-}
+// ContactEnd: kinematics.h
 
 namespace lsd {
 

@@ -22,11 +22,13 @@
 //   q = 0: e = (a_l / a_ul)^(1/(2p)) for every v0.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "../kinematics.h"
 #include "../input_checks.h"
 #include "../law_parameters.h"
+#include "../law_unit.h"
 
 namespace tdem {
 namespace power_law {
@@ -151,6 +153,50 @@ inline Params<double> from_restitution(double a_l, double p, double e) {
   checks::restitution(e);
   return {a_l, p, a_l / std::pow(e, 2.0 * p), 0.0};
 }
+
+// ---------------------------------------------------------------- the law as a unit
+// (src/contact/law_unit.h; listed in src/contact/laws.h)
+struct Law {
+  static constexpr const law::Description& description = power_law::description;
+  using Params = power_law::Params<double>;
+  static constexpr bool needs_reff = false;
+  static constexpr double stress_strain_exponent = 1.0;
+  static constexpr ContactEnd end = ContactEnd::zero_force;
+  static constexpr const char* properties[] = {"loadingCoefficient", "loadingExponent", "unloadingCoefficient",
+                                               "unloadingExponentIncrement"};
+  static constexpr const char* tangential_basis_text = "dF/dxi";
+  static Params params(const double* v) {
+    const Params p = from_values(v);
+    validate(p);
+    return p;
+  }
+  static NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
+    return power_law::force(p, kin, hist, update);
+  }
+  // k_t = KAPPA dF/dxi of the branch in use
+  static double tangential_basis(const Params&, const NormalResult<double>& r, const NormalKinematics<double>&) {
+    return r.stiffness;
+  }
+  // time-step advice: the larger of the loading tangent p F_max / xi_max and the unloading tangent
+  // (p+q) F_max / (xi_max - xi_f) at xi_max; closed-form contact time
+  static const char* family(const Params&) { return "power_law"; }
+  static double max_overlap(const Params& p, double meff, double, double v) {
+    return power_law::max_overlap(p, meff, v);
+  }
+  static double stiffness_at(const Params& p, double, double xi_max) {
+    const double f_max = p.a_load * std::pow(xi_max, p.p);
+    const double d = unloading_amplitude(p, xi_max);
+    double k = p.p * f_max / xi_max;
+    if (d <= xi_max) k = std::max(k, (p.p + p.q) * f_max / d);
+    return k;
+  }
+  static double contact_time(const Params& p, double meff, double, double v) {
+    return power_law::contact_time(p, meff, v);
+  }
+  static double contact_time_estimate(const Params& p, double meff, double, double v0) {
+    return 2.0 * power_law::max_overlap(p, meff, v0) / v0 * shape_integral(p.p);
+  }
+};
 
 }  // namespace power_law
 }  // namespace tdem

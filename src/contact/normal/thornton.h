@@ -24,7 +24,9 @@
 #include "../kinematics.h"
 #include "../input_checks.h"
 #include "../law_parameters.h"
+#include "../law_unit.h"
 #include "../material.h"
+#include "hertz_damped.h"
 
 namespace tdem {
 namespace thornton {
@@ -190,6 +192,45 @@ inline double yield_pressure_from_restitution(double e, double v0, double e_star
   checks::positive("impact velocity v0", v0);
   return yield_pressure_from_yield_velocity(velocity_ratio_from_restitution(e) * v0, e_star, reff, meff);
 }
+
+// ---------------------------------------------------------------- the law as a unit
+// (src/contact/law_unit.h; listed in src/contact/laws.h)
+struct Law {
+  static constexpr const law::Description& description = thornton::description;
+  using Params = thornton::Params<double>;
+  static constexpr bool needs_reff = true;
+  static constexpr double stress_strain_exponent = 1.5;
+  static constexpr ContactEnd end = ContactEnd::zero_force;
+  static constexpr const char* properties[] = {"yieldPressure"};
+  static constexpr const char* tangential_basis_text = "2 E* a";
+  static Params params(const double* v) {  // E* PY (law::unit_values)
+    const Params p{v[0], v[1]};
+    validate(p);
+    return p;
+  }
+  static NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
+    return thornton::force(p, kin, hist, update);
+  }
+  // k_t = KAPPA 2 E* a with the contact radius a = sqrt(R* xi) (the Hertz tangent; it follows the
+  // contact radius, not the plastic branch of the normal law)
+  static double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>& kin) {
+    return 2.0 * p.e_star * std::sqrt(kin.reff * kin.overlap);
+  }
+  // time-step advice: the unloading tangent at xi_max, 2 E* sqrt(R* xi_max) (>= every loading
+  // slope); no closed-form contact time (the advice integrates the impact)
+  static const char* family(const Params&) { return "thornton"; }
+  static double max_overlap(const Params& p, double meff, double reff, double v) {
+    return thornton::max_overlap(p, reff, meff, v);
+  }
+  static double stiffness_at(const Params& p, double reff, double xi_max) {
+    return 2.0 * p.e_star * std::sqrt(reff * xi_max);
+  }
+  static double contact_time(const Params&, double, double, double) { return NAN; }
+  // Hertz's t_c = 2.943 xi_max / v0 with the elastic-plastic largest overlap
+  static double contact_time_estimate(const Params& p, double meff, double reff, double v0) {
+    return hertz::contact_time_constant() * thornton::max_overlap(p, reff, meff, v0) / v0;
+  }
+};
 
 }  // namespace thornton
 }  // namespace tdem

@@ -22,6 +22,7 @@
 #include "../kinematics.h"
 #include "../input_checks.h"
 #include "../law_parameters.h"
+#include "../law_unit.h"
 
 namespace tdem {
 namespace walton_braun {
@@ -146,6 +147,44 @@ inline Params<double> force_dependent_from_restitution(double e, double v0, doub
   checks::positive("effective mass m*", meff);
   return force_dependent(k_l, (1.0 / (e * e) - 1.0) / (v0 * std::sqrt(meff / k_l)));
 }
+
+// ---------------------------------------------------------------- the law as a unit
+// (src/contact/law_unit.h; listed in src/contact/laws.h)
+struct Law {
+  static constexpr const law::Description& description = walton_braun::description;
+  using Params = walton_braun::Params<double>;
+  static constexpr bool needs_reff = false;
+  static constexpr double stress_strain_exponent = 1.0;
+  static constexpr ContactEnd end = ContactEnd::zero_force;
+  static constexpr const char* properties[] = {"loadingStiffness", "unloadingStiffness", "unloadingStiffnessSlope"};
+  static constexpr const char* tangential_basis_text = "kl";
+  static Params params(const double* v) {
+    const Params p = from_values(v);
+    validate(p);
+    return p;
+  }
+  static NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
+    return walton_braun::force(p, kin, hist, update);
+  }
+  // k_t = KAPPA k_l (the loading stiffness, on every branch)
+  static double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>&) {
+    return p.k_load;
+  }
+  // time-step advice: the unloading stiffness k_ul from xi_max; closed-form contact time
+  static const char* family(const Params& p) {
+    return p.slope > 0.0 ? "walton_braun (force-dependent k_ul)" : "walton_braun";
+  }
+  static double max_overlap(const Params& p, double meff, double, double v) {
+    return walton_braun::max_overlap(p, meff, v);
+  }
+  static double stiffness_at(const Params& p, double, double xi_max) { return unloading_stiffness(p, xi_max); }
+  static double contact_time(const Params& p, double meff, double, double v) {
+    return walton_braun::contact_time(p, meff, v);
+  }
+  static double contact_time_estimate(const Params& p, double meff, double, double) {
+    return M_PI * std::sqrt(meff / p.k_load);
+  }
+};
 
 }  // namespace walton_braun
 }  // namespace tdem

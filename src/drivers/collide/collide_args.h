@@ -29,7 +29,7 @@ class Args {
         "--e-fit", "--e-coef", "--tc-fit", "--tc-coef", "--v-min", "--v-max", "--e-min", "--al", "--p",
         "--aul", "--q", "--angle", "--spin", "--spin2", "--tangential", "--mu", "--kt", "--kappa", "--gammat",
         "--friction-limit", "--slip-reset", "--gstar", "--eta-ratio", "--beta0", "--psi-kappa", "--lever-arm",
-        "--analytic", "--scheme", "--gap", "--phases"};
+        "--analytic", "--scheme", "--gap", "--phases", "--params"};
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
       if (a == "-h") a = "--help";
@@ -86,6 +86,29 @@ class Args {
   }
   void forbid(const std::string& o, const std::string& why) const {
     if (has(o)) throw BadInput("option " + o + " cannot be used " + why);
+  }
+  // A list of numbers "v1 v2 ..." (blanks or commas between them).
+  std::vector<double> numbers(const std::string& o) {
+    used_.insert(o);
+    std::string s = given_.at(o);
+    for (char& ch : s)
+      if (ch == ',') ch = ' ';
+    std::vector<double> out;
+    size_t i = 0;
+    while (true) {
+      while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+      if (i >= s.size()) break;
+      size_t j = i;
+      while (j < s.size() && !std::isspace(static_cast<unsigned char>(s[j]))) ++j;
+      const std::string w = s.substr(i, j - i);
+      char* end = nullptr;
+      const double v = std::strtod(w.c_str(), &end);
+      if (end == w.c_str() || *end != '\0' || !std::isfinite(v))
+        throw BadInput("option " + o + ": '" + w + "' is not a number");
+      out.push_back(v);
+      i = j;
+    }
+    return out;
   }
   // Every option given must have been read.
   void check_all_used(const std::string& law) const {

@@ -25,6 +25,7 @@
 #include "collision/phase_average.h"
 #include "collision/oblique.h"
 #include "collision/rigid_body.h"
+#include "contact/laws.h"
 #include "contact/tangential/di_renzo.h"
 #include "contact/tangential/haff_werner.h"
 #include "contact/tangential/linear_spring.h"

@@ -9,29 +9,18 @@
 // the start phase of the contact (--phases). See docs/collide.md.
 // Exit status: 0 success, 1 the contact did not end / the curve could not be written,
 // 2 bad input (the message names the option, the value and the allowed range).
-#include "collide_analytic.h"
+#include "collide_unit.h"
 
 namespace {
-
-template <class Law>
-void go(Run& run, Law& law, const Bodies& b, double v0, const collision::Options& o) {
-  if (run.obl.active) {
-    run_oblique(run, law, o);
-  } else if (run.sch.active) {
-    collision::Frictionless none;
-    scheme_with(run, law, none);
-  } else {
-    run.result = collision::integrate(law, b, v0, o);
-  }
-}
 
 Run run(Args& a) {
   Run run;
   if (a.flag("--help")) return run;
-  a.require("--law", "(lsd, hertz, walton_braun, thornton, continuous_potential, power_law, extended_linear, "
-                     "extended_hertz)");
-  run.law = a.choice("--law", {"lsd", "hertz", "walton_braun", "thornton", "continuous_potential", "power_law",
-                               "extended_linear", "extended_hertz"});
+  const std::vector<std::string> laws = law_names();
+  std::string law_list;
+  for (const std::string& l : laws) law_list += (law_list.empty() ? "" : ", ") + l;
+  a.require("--law", "(" + law_list + ")");
+  run.law = a.choice("--law", laws);
   run.analytic = a.flag("--analytic");
   if (run.analytic) analytic_check_start(a, run.law);
   a.require("--v0", "(impact velocity)");
@@ -120,7 +109,10 @@ Run run(Args& a) {
   if (run.obl.active && a.has("--steps")) run.obl.opt.steps_per_contact = opt.steps_per_contact;
 
   // ------------------------------------------------ laws
-  if (run.law == "lsd") {
+  const int unit = tdem::law::index_of<tdem::law::normal_units>(run.law.c_str());
+  if (a.has("--params")) {
+    run_unit(run, a, unit, b, meff, v0, opt);
+  } else if (run.law == "lsd") {
     collision::LsdLaw law;
     law.end_mode = read_end(a, ContactEnd::zero_overlap);
     if (a.has("--e")) {

@@ -247,57 +247,38 @@ inline Advice for_hertz(hertz::Damping d, ContactEnd end, const hertz::Params<do
   return a;
 }
 
-// Walton-Braun (constant or force-dependent unloading stiffness).
-inline Advice for_walton_braun(const walton_braun::Params<double>& p, const Input& in) {
-  detail::validate(in, false);
-  walton_braun::validate(p);
+// A normal law that is a unit (src/contact/law_unit.h; walton_braun, thornton, power_law): the
+// largest tangent stiffness at the largest overlap of v_max, and the contact time in closed form
+// or, where the law has none, integrated.
+template <class U>
+inline Advice for_law(const typename U::Params& p, const Input& in) {
+  detail::validate(in, U::needs_reff);
+  const double xi_max = U::max_overlap(p, in.meff, in.reff, in.v_max);  // checks p
   Advice a;
-  a.law = p.slope > 0.0 ? "walton_braun (force-dependent k_ul)" : "walton_braun";
-  detail::stability(a, walton_braun::unloading_stiffness_at(p, in.meff, in.v_max), 0.0, in.meff, in.scheme);
-  a.max_overlap = walton_braun::max_overlap(p, in.meff, in.v_max);
-  a.contact_time = walton_braun::contact_time(p, in.meff, in.v_max);
-  a.contact_time_source = "closed form";
-  a.velocity_at_critical = in.v_max;
-  finish(a, in);
-  return a;
-}
-
-// Thornton elastic-perfectly-plastic.
-inline Advice for_thornton(const thornton::Params<double>& p, const Input& in) {
-  detail::validate(in, true);
-  thornton::validate(p);
-  Advice a;
-  a.law = "thornton";
-  const double xi_max = thornton::max_overlap(p, in.reff, in.meff, in.v_max);
-  detail::stability(a, 2.0 * p.e_star * std::sqrt(in.reff * xi_max), 0.0, in.meff, in.scheme);
+  a.law = U::family(p);
+  detail::stability(a, U::stiffness_at(p, in.reff, xi_max), 0.0, in.meff, in.scheme);
   a.max_overlap = xi_max;
-  collision::ThorntonLaw law;
-  law.p = p;
-  a.contact_time = detail::integrated_contact_time(law, in.meff, in.reff, in.v_max);
-  a.contact_time_source = "integrated (head_on.h, RK4)";
+  a.contact_time = U::contact_time(p, in.meff, in.reff, in.v_max);
+  a.contact_time_source = "closed form";
+  if (std::isnan(a.contact_time)) {
+    collision::UnitLaw<U> law;
+    law.p = p;
+    a.contact_time = detail::integrated_contact_time(law, in.meff, in.reff, in.v_max);
+    a.contact_time_source = "integrated (head_on.h, RK4)";
+  }
   a.velocity_at_critical = in.v_max;
   finish(a, in);
   return a;
 }
 
-// Power-law hysteresis.
+inline Advice for_walton_braun(const walton_braun::Params<double>& p, const Input& in) {
+  return for_law<walton_braun::Law>(p, in);
+}
+inline Advice for_thornton(const thornton::Params<double>& p, const Input& in) {
+  return for_law<thornton::Law>(p, in);
+}
 inline Advice for_power_law(const power_law::Params<double>& p, const Input& in) {
-  detail::validate(in, false);
-  power_law::validate(p);
-  Advice a;
-  a.law = "power_law";
-  const double xm = power_law::max_overlap(p, in.meff, in.v_max);
-  const double f_max = p.a_load * std::pow(xm, p.p);
-  const double d = power_law::unloading_amplitude(p, xm);
-  double k = p.p * f_max / xm;                             // loading tangent at xi_max
-  if (d <= xm) k = std::max(k, (p.p + p.q) * f_max / d);  // unloading tangent at xi_max
-  detail::stability(a, k, 0.0, in.meff, in.scheme);
-  a.max_overlap = xm;
-  a.contact_time = power_law::contact_time(p, in.meff, in.v_max);
-  a.contact_time_source = "closed form";
-  a.velocity_at_critical = in.v_max;
-  finish(a, in);
-  return a;
+  return for_law<power_law::Law>(p, in);
 }
 
 // Continuous potential (the collision starts where the potential starts to act).

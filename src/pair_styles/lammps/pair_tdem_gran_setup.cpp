@@ -20,6 +20,7 @@
 #include "update.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 using namespace LAMMPS_NS;
@@ -235,16 +236,14 @@ double PairTDEMGran::init_one(int i, int j)
 {
   if (!allocated) allocate();
   if (!setflag[i][j] && setflag[i][i] && setflag[j][j] &&
-      (coeffs(i, i).mode == tdem_lammps::MODE_HERTZ ||
-       coeffs(i, i).mode == tdem_lammps::MODE_THORNTON ||
-       coeffs(i, i).mode == tdem_lammps::MODE_EXT_HERTZ) &&
-      coeffs(j, j).mode == coeffs(i, i).mode) {
+      tdem_lammps::mixes_materials(coeffs(i, i).mode) && coeffs(j, j).mode == coeffs(i, i).mode) {
     // normal hertz mixes the materials: 1/E* = (1-nu_i^2)/E_i + (1-nu_j^2)/E_j, with the
     // material of type I from pair_coeff I I and of type J from pair_coeff J J; everything
     // else (damping, tangential law, options) must agree
     const LawCoeffs &a = coeffs(i, i), &b = coeffs(j, j);
-    if (a.hdamp != b.hdamp || a.hgamma != b.hgamma || a.htheta != b.htheta || a.he != b.he ||
-        a.th_py != b.th_py ||
+    bool own_differ = false;  // a unit's own values (after its materials)
+    for (int k = tdem::law::MATERIAL_VALUES; k < tdem::law::MAX_UNIT_VALUES; ++k) own_differ |= a.uv[k] != b.uv[k];
+    if (a.hdamp != b.hdamp || a.hgamma != b.hgamma || a.htheta != b.htheta || a.he != b.he || own_differ ||
         (a.mode == tdem_lammps::MODE_EXT_HERTZ &&
          (a.ext.e_fit.form != b.ext.e_fit.form || a.ext.e_fit.c[0] != b.ext.e_fit.c[0] ||
           a.ext.e_fit.c[1] != b.ext.e_fit.c[1] || a.ext.e_fit.c[2] != b.ext.e_fit.c[2] ||
@@ -255,12 +254,14 @@ double PairTDEMGran::init_one(int i, int j)
       error->all(FLERR,
                  "pair tdem/gran: no pair_coeff for type pair " + std::to_string(i) + " " +
                      std::to_string(j) +
-                     " and the normal hertz/thornton/extended_hertz laws (with their tangential "
+                     " and the normal " + tdem_lammps::material_law_names() +
+                     " laws (with their tangential "
                      "laws) of types I I and J J differ in more than the materials (E, NU); set "
                      "this type pair");
     LawCoeffs c = a;
     c.E2 = b.E1;
     c.nu2 = b.nu1;
+    if (tdem_lammps::is_unit(c.mode)) c.uv[2] = b.uv[0], c.uv[3] = b.uv[1];  // E2 NU2 of a unit
     c.tE2 = b.tE1;  // Mindlin-type tangential laws: G* of the two materials
     c.tnu2 = b.tnu1;
     tdem_lammps::derive_law(lmp, "pair tdem/gran (mixing types " + std::to_string(i) + " " +
@@ -383,17 +384,26 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 // Version 5 adds, after the version, how the writing LAMMPS stores neighbor-history partner IDs
 // (compat::HistoryTags); files of versions 2-4 were written by tdem on LAMMPS 2022 (values).
 // Version 6 appends the rolling resistance (LawCoeffs::roll, rp); versions 4 and 5 hold
-// LAW_COEFFS_V5_SIZE bytes.
+// LAW_COEFFS_V5_SIZE bytes. Version 7 stores the normal law's name (RESTART_NAME bytes) before
+// the LawCoeffs of each type pair, and the values of a unit law (LawCoeffs::uv): the reader takes
+// the law by its name and derives its parameters anew. In files of versions 2-6 walton_braun,
+// thornton and power_law were modes 4-6 with members of their own (read_legacy_units).
+static constexpr int RESTART_NAME = 32;
+
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 6;
+  const int version = 7;
   fwrite(&version, sizeof(int), 1, fp);
   const int tags = (int) tdem_lammps::compat::history_tags();
   fwrite(&tags, sizeof(int), 1, fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
-      if (setflag[i][j]) fwrite(&coeffs(i, j), sizeof(LawCoeffs), 1, fp);
+      if (!setflag[i][j]) continue;
+      char name[RESTART_NAME] = {};
+      std::snprintf(name, sizeof name, "%s", tdem_lammps::normal_name(coeffs(i, j)));
+      fwrite(name, 1, sizeof name, fp);
+      fwrite(&coeffs(i, j), sizeof(LawCoeffs), 1, fp);
     }
 }
 
@@ -404,16 +414,17 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version < 2 || version > 6)
+  if (version < 2 || version > 7)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads versions 2 to 6)");
+                          " cannot be read (this build reads versions 2 to 7)");
   int tags = (int) tdem_lammps::compat::HistoryTags::value;  // versions 2-4: LAMMPS 2022
   if (version >= 5) {
     if (me == 0) utils::sfread(FLERR, &tags, sizeof(int), 1, fp, nullptr, error);
     MPI_Bcast(&tags, 1, MPI_INT, 0, world);
   }
   restart_history_tags = tags;
-  const size_t nbytes = version >= 6   ? sizeof(LawCoeffs)
+  const size_t nbytes = version >= 7   ? sizeof(LawCoeffs)
+                        : version == 6 ? tdem_lammps::LAW_COEFFS_V6_SIZE
                         : version >= 4 ? tdem_lammps::LAW_COEFFS_V5_SIZE
                         : version == 3 ? tdem_lammps::LAW_COEFFS_V3_SIZE
                                        : tdem_lammps::LAW_COEFFS_V2_SIZE;
@@ -423,8 +434,25 @@ void PairTDEMGran::read_restart(FILE *fp)
       MPI_Bcast(&setflag[i][j], 1, MPI_INT, 0, world);
       if (setflag[i][j]) {
         LawCoeffs c;
+        char name[RESTART_NAME] = {};
+        if (me == 0 && version >= 7) utils::sfread(FLERR, name, 1, sizeof name, fp, nullptr, error);
         if (me == 0) utils::sfread(FLERR, &c, nbytes, 1, fp, nullptr, error);
+        MPI_Bcast(name, sizeof name, MPI_CHAR, 0, world);
         MPI_Bcast(&c, nbytes, MPI_BYTE, 0, world);
+        name[RESTART_NAME - 1] = '\0';
+        if (version >= 7) {
+          const int mode = tdem_lammps::mode_of_name(name, c.mode);
+          if (mode < 0)
+            error->all(FLERR, std::string("pair tdem/gran: the restart file holds normal law '") + name +
+                                  "' for type pair " + std::to_string(i) + " " + std::to_string(j) +
+                                  ", which this build does not have");
+          c.mode = mode;
+        } else {
+          tdem_lammps::read_legacy_units(c);
+        }
+        if (tdem_lammps::is_unit(c.mode))
+          tdem_lammps::derive_law(lmp, "pair tdem/gran (restart, type pair " + std::to_string(i) + " " +
+                                           std::to_string(j) + ")", c);
         coeffs(i, j) = c;
         coeffs(j, i) = c;
       }

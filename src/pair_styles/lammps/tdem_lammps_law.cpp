@@ -244,28 +244,23 @@ int parse_described(LAMMPS *lmp, const std::string &where, const tdem::law::Desc
   return iarg + n;
 }
 
-// Store the values of a listed law in the type pair's coefficients (the restart layout).
-void store_described(LAMMPS *lmp, const std::string &where, const tdem::law::Description &d, const double *v,
-                     LawCoeffs &c) {
-  if (&d == &tdem::walton_braun::description) {
-    c.mode = MODE_WALTON_BRAUN;
-    const auto p = tdem::walton_braun::from_values(v);
-    c.wb_kl = p.k_load, c.wb_ku = p.k_unload, c.wb_s = p.slope;
-  } else if (&d == &tdem::thornton::description) {
-    c.mode = MODE_THORNTON;
-    c.E1 = v[0], c.nu1 = v[1], c.E2 = v[2], c.nu2 = v[3];
-    c.th_py = tdem::thornton::from_values(v).p_y;
-  } else if (&d == &tdem::power_law::description) {
-    c.mode = MODE_POWER_LAW;
-    c.pl = tdem::power_law::from_values(v);
-    try {
-      tdem::power_law::validate(c.pl);
-    } catch (const std::exception &ex) {
-      fail(lmp, where, std::string("normal power_law: ") + ex.what());
-    }
-  } else {
-    fail(lmp, where, std::string("normal ") + d.name + " has no LAMMPS coefficients yet");
-  }
+// Store the values of a unit (src/contact/laws.h) in the type pair's coefficients; derive_law
+// derives its kernel parameters.
+void store_described(const tdem::law::Description &d, const double *v, LawCoeffs &c) {
+  c.mode = MODE_UNIT + tdem::law::index_of<NormalUnits>(&d);
+  for (int k = 0; k < tdem::law::value_count(d); ++k) c.uv[k] = v[k];
+}
+
+// "walton_braun, thornton, power_law" (sep ", "), or with last = " and " before the last name.
+std::string unit_names(const char *sep, const char *last = nullptr) {
+  std::string s;
+  for (int k = 0; k < NormalUnits::size; ++k)
+    s += (k == 0 ? "" : last && k + 1 == NormalUnits::size ? last : sep) + std::string(NormalUnits::descriptions[k]->name);
+  return s;
+}
+const std::string &normal_law_names() {
+  static const std::string s = "lsd, hertz, " + unit_names(", ") + ", extended_linear, extended_hertz";
+  return s;
 }
 
 // normal extended_linear e_fit FORM C.. tc_fit FORM C.. [v_min V] [v_max V]
@@ -377,15 +372,15 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   // ---- normal lsd stiffness KN GAMMAN | normal lsd restitution E TC | normal hertz ...
   if (iarg >= narg || strcmp(arg[iarg], "normal") != 0)
     fail(lmp, where,
-         std::string("expected 'normal lsd|hertz|walton_braun|thornton|power_law|extended_linear|extended_hertz ...' first, got '") +
+         "expected 'normal lsd|hertz|" + unit_names("|") + "|extended_linear|extended_hertz ...' first, got '" +
              (iarg < narg ? arg[iarg] : "end of line") + "'");
-  if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: lsd, hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz");
+  if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: " + normal_law_names());
   if (strcmp(arg[iarg + 1], "hertz") == 0) {
     iarg = parse_hertz(lmp, where, narg, arg, iarg + 2, c);
   } else if (const tdem::law::Description *d = tdem::law::find(tdem::law::normal_laws, arg[iarg + 1])) {
-    double v[tdem::law::MATERIAL_VALUES + 8];
+    double v[tdem::law::MAX_UNIT_VALUES];
     iarg = parse_described(lmp, where, *d, narg, arg, iarg + 2, v);
-    store_described(lmp, where, *d, v, c);
+    store_described(*d, v, c);
   } else if (strcmp(arg[iarg + 1], "extended_linear") == 0) {
     iarg = parse_extended(lmp, where, false, narg, arg, iarg + 2, c);
   } else if (strcmp(arg[iarg + 1], "extended_hertz") == 0) {
@@ -393,7 +388,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   } else if (strcmp(arg[iarg + 1], "lsd") != 0) {
     fail(lmp, where,
          std::string("normal law '") + arg[iarg + 1] +
-             "' is unknown; allowed: lsd, hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz");
+             "' is unknown; allowed: " + normal_law_names());
   } else {
   if (iarg + 2 >= narg)
     fail(lmp, where,
@@ -438,13 +433,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   } else if ((iarg += 2), c.mode != MODE_STIFFNESS_MASS && c.mode != MODE_STIFFNESS_ABS) {
     need(lmp, where,
          std::string("tangential cundall_strack (with normal ") +
-             (c.mode == MODE_HERTZ            ? "hertz"
-              : c.mode == MODE_WALTON_BRAUN ? "walton_braun"
-              : c.mode == MODE_THORNTON     ? "thornton"
-              : c.mode == MODE_POWER_LAW    ? "power_law"
-              : c.mode == MODE_EXT_LINEAR   ? "extended_linear"
-              : c.mode == MODE_EXT_HERTZ    ? "extended_hertz"
-                                            : "lsd restitution") +
+             (c.mode == MODE_RESTITUTION ? "lsd restitution" : normal_name(c)) +
              ")",
          "KAPPA MU",
          available(narg, arg, iarg), 2);
@@ -486,9 +475,9 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       if (iarg + 1 >= narg)
         fail(lmp, where, "keyword 'damping' needs a value; allowed: mass, absolute");
       const std::string v = arg[iarg + 1];
-      if (c.mode == MODE_WALTON_BRAUN || c.mode == MODE_THORNTON || c.mode == MODE_POWER_LAW)
-        fail(lmp, where, "keyword 'damping " + v + "' applies to 'normal lsd stiffness' only "
-                         "(normal walton_braun, thornton and power_law have no damping)");
+      if (is_unit(c.mode))
+        fail(lmp, where, "keyword 'damping " + v + "' applies to 'normal lsd stiffness' only (normal " +
+                             normal_name(c) + " has no damping)");
       if (c.mode == MODE_EXT_LINEAR || c.mode == MODE_EXT_HERTZ)
         fail(lmp, where, "keyword 'damping " + v + "' applies to 'normal lsd stiffness' only "
                          "(the extended laws derive their damping from e_fit)");

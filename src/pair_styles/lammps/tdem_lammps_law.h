@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: the normal laws lsd (tdem::lsd), hertz (tdem::hertz), walton_braun,
-// thornton, power_law (tdem::power_law), extended_linear and extended_hertz (tdem::extended)
+// tdem for LAMMPS: the normal laws lsd (tdem::lsd), hertz (tdem::hertz), extended_linear and
+// extended_hertz (tdem::extended), and every normal law that is a unit (src/contact/law_unit.h,
+// listed in src/contact/laws.h: walton_braun, thornton, power_law)
 // with the Cundall-Strack tangential law (tdem::cundall_strack) or one of the tangential laws of
 // src/contact/tangential/ (haff_werner, linear_spring, walton_braun_tangential,
 // mindlin_deresiewicz, mindlin_no_slip, di_renzo), as used by pair tdem/gran and fix
 // tdem/wall/gran. With cundall_strack the lsd modes run on compile-time specialised paths
 // (M = LawMode 0..2, end and slip fixed too), the other laws on paths specialised for the law
-// (M = 3..8, end and slip read at run time); type pairs with different laws use the run-time
+// (M = 3, 7, 8 and MODE_UNIT + k, end and slip read at run time); type pairs with different laws use the run-time
 // path (M = -1). The other tangential laws run on one path per law (TL fixed at compile time,
 // the normal law read at run time).
 //
@@ -22,12 +23,10 @@
 // where LAMMPS applies limit_damping.
 #pragma once
 
+#include "contact/laws.h"
 #include "contact/normal/extended.h"
 #include "contact/normal/hertz_damped.h"
 #include "contact/normal/linear_viscoelastic.h"
-#include "contact/normal/power_law_hysteresis.h"
-#include "contact/normal/thornton.h"
-#include "contact/normal/walton_braun.h"
 #include "contact/tangential/cundall_strack.h"
 #include "contact/rolling/sds.h"
 #include "contact/tangential/di_renzo.h"
@@ -40,6 +39,7 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <utility>
 
 namespace LAMMPS_NS {
 class LAMMPS;
@@ -54,16 +54,28 @@ enum LawMode : int {
   MODE_RESTITUTION = 2,     // k = m* omega0^2, gamma = m* 2 delta from (e, t_c); kt = KAPPA k
   MODE_HERTZ = 3,           // normal hertz: k~ = 4/3 E* sqrt(R*), damping member hdamp;
                             // kt = KAPPA * 2 E* a
-  MODE_WALTON_BRAUN = 4,    // normal walton_braun KL KUL [S]; kt = KAPPA KL; history xi_max
-  MODE_THORNTON = 5,        // normal thornton E NU [E2 NU2] PY; kt = KAPPA 2 E* a;
-                            // history xi_max, f_max
-  MODE_POWER_LAW = 6,       // normal power_law AL P AUL [Q]; kt = KAPPA dF/dxi; history: the
-                            // kernel's slots (tdem::power_law::history_size)
+  // 4, 5, 6: walton_braun, thornton, power_law in restart files of versions 2-6 (LEGACY_MODE_*)
   MODE_EXT_LINEAR = 7,      // normal extended_linear e_fit .. tc_fit .. [v_min V] [v_max V];
                             // kt = KAPPA k(v0); history v0, k, gamma
-  MODE_EXT_HERTZ = 8        // normal extended_hertz E NU [E2 NU2] e_fit .. [v_min] [v_max];
+  MODE_EXT_HERTZ = 8,       // normal extended_hertz E NU [E2 NU2] e_fit .. [v_min] [v_max];
                             // kt = KAPPA dF/dxi (Hertz tangent); history v0, alpha
+  MODE_UNIT = 16            // MODE_UNIT + k: the k-th law of tdem::law::normal_units, with its
+                            // input line, kt = KAPPA * its tangential basis and its history slots
 };
+enum LegacyMode : int { LEGACY_MODE_WALTON_BRAUN = 4, LEGACY_MODE_THORNTON = 5, LEGACY_MODE_POWER_LAW = 6 };
+
+using NormalUnits = tdem::law::normal_units;
+inline constexpr bool is_unit(int mode) { return mode >= MODE_UNIT && mode < MODE_UNIT + NormalUnits::size; }
+// The unit of law mode M (M >= MODE_UNIT).
+template <int M>
+using UnitOf = tdem::law::UnitAt<M - MODE_UNIT, NormalUnits>;
+// Does pair tdem/gran mix the materials of types I and J for this law? (hertz, extended_hertz
+// and the units with materials); "hertz/thornton/extended_hertz" names them.
+inline bool mixes_materials(int mode) {
+  return mode == MODE_HERTZ || mode == MODE_EXT_HERTZ ||
+         (is_unit(mode) && NormalUnits::descriptions[mode - MODE_UNIT]->materials);
+}
+std::string material_law_names();
 
 // Tangential laws (LawCoeffs::tlaw). cundall_strack is the original path (bitwise equal to
 // gran/hooke/history with normal lsd stiffness); the others run the kernels of
@@ -89,9 +101,7 @@ constexpr int tangential_history_size(int tlaw) {
                                             : TANGENTIAL_HISTORY;
 }
 constexpr int normal_history_size(int mode) {
-  return mode == MODE_WALTON_BRAUN ? tdem::walton_braun::history_size
-         : mode == MODE_THORNTON   ? tdem::thornton::history_size
-         : mode == MODE_POWER_LAW  ? tdem::power_law::history_size
+  return is_unit(mode)             ? NormalUnits::descriptions[mode - MODE_UNIT]->history_size
          : mode == MODE_EXT_LINEAR ? tdem::extended::linear_history_size
          : mode == MODE_EXT_HERTZ  ? tdem::extended::hertz_history_size
                                    : 0;
@@ -110,11 +120,12 @@ inline bool tangential_slot_flips(int tlaw, int m) {
 // The largest number of normal-law slots (extended_linear's v0, k, gamma) and of history values.
 inline constexpr int MAX_NORMAL_HISTORY = tdem::extended::linear_history_size;
 inline constexpr int MAX_HISTORY = tdem::mindlin_deresiewicz::history_size + MAX_NORMAL_HISTORY;
-static_assert(normal_history_size(MODE_THORNTON) <= MAX_NORMAL_HISTORY &&
-                  normal_history_size(MODE_EXT_HERTZ) <= MAX_NORMAL_HISTORY &&
-                  normal_history_size(MODE_POWER_LAW) <= MAX_NORMAL_HISTORY &&
-                  normal_history_size(MODE_WALTON_BRAUN) <= MAX_NORMAL_HISTORY,
-              "MAX_NORMAL_HISTORY must cover every law");
+constexpr bool covers_every_law() {
+  for (int k = 0; k < NormalUnits::size; ++k)
+    if (normal_history_size(MODE_UNIT + k) > MAX_NORMAL_HISTORY) return false;
+  return normal_history_size(MODE_EXT_HERTZ) <= MAX_NORMAL_HISTORY;
+}
+static_assert(covers_every_law(), "MAX_NORMAL_HISTORY must cover every law");
 
 // Zero the slots after the tangential block of nt values: the normal law's (at most 3) and the
 // rolling displacement's (3; they follow the normal law's). Explicit stores: a loop of run-time
@@ -175,13 +186,12 @@ struct LawCoeffs {
   double htheta = 0;  // general: exponent THETA
   double he = 0;      // tsuji: requested restitution E
   double estar = 0;   // derived: 1/E* = (1-nu1^2)/E1 + (1-nu2^2)/E2
-  // normal walton_braun (MODE_WALTON_BRAUN): k_l, k_u, s (k_ul = k_u + s F_max)
-  double wb_kl = 0, wb_ku = 0, wb_s = 0;
-  // normal thornton (MODE_THORNTON): limiting contact pressure p_y (materials in E1 .. estar)
-  double th_py = 0;
+  // restart files of versions 2-6 only (read_legacy_units): walton_braun k_l, k_u, s; thornton
+  // p_y (its materials in E1 .. nu2)
+  double legacy_wb_kl = 0, legacy_wb_ku = 0, legacy_wb_s = 0, legacy_th_py = 0;
   // ---- restart format version 3 appends the members below (version 2 files end here)
-  // normal power_law (MODE_POWER_LAW): a_l, p, a_ul, q
-  tdem::power_law::Params<double> pl{0.0, 0.0, 0.0, 0.0};
+  // restart files of versions 3-6 only: power_law a_l, p, a_ul, q
+  double legacy_pl[4] = {0.0, 0.0, 0.0, 0.0};
   // normal extended_linear / extended_hertz (MODE_EXT_LINEAR, MODE_EXT_HERTZ): the fits e(v0),
   // t_c(v0) (linear only) and the impact-velocity clamp; extended_hertz keeps its materials in
   // E1 .. estar (k~ = 4/3 E* sqrt(R*) per contact)
@@ -198,11 +208,27 @@ struct LawCoeffs {
   // rolling resistance `rolling sds KR GAMMAR MUR` (src/contact/rolling/sds.h); roll = 0: none
   int roll = 0, pad3 = 0;
   tdem::rolling_sds::Params<double> rp{0.0, 0.0, 0.0};
+  // ---- restart format version 7 appends the members below, and stores the law's name
+  // a normal law that is a unit (mode >= MODE_UNIT): its expanded input values (materials
+  // E1 NU1 E2 NU2 first) and the kernel parameters derived from them (derive_law)
+  double uv[tdem::law::MAX_UNIT_VALUES] = {};
+  tdem::law::ParamStore up{};
 };
 // Bytes of LawCoeffs in restart files of version 2 (before the members of version 3), 3, and 4/5.
-inline constexpr size_t LAW_COEFFS_V2_SIZE = offsetof(LawCoeffs, pl);
+inline constexpr size_t LAW_COEFFS_V2_SIZE = offsetof(LawCoeffs, legacy_pl);
 inline constexpr size_t LAW_COEFFS_V3_SIZE = offsetof(LawCoeffs, tlaw);
 inline constexpr size_t LAW_COEFFS_V5_SIZE = offsetof(LawCoeffs, roll);
+inline constexpr size_t LAW_COEFFS_V6_SIZE = offsetof(LawCoeffs, uv);
+
+// The coefficients of a file of versions 2-6 in this build's form: walton_braun, thornton and
+// power_law (modes 4, 5, 6 there) become their units with the values of their legacy members.
+void read_legacy_units(LawCoeffs &c);
+
+// The name of the normal law of c ("lsd", "hertz", "thornton", ...), as restart files store it.
+const char *normal_name(const LawCoeffs &c);
+// The law mode of a normal law name stored in a restart file (lsd: the mode stored with it), or
+// -1 if this build has no such law.
+int mode_of_name(const char *name, int stored_mode);
 
 // History values of a type pair's law: the tangential block, the normal law's slots, then the
 // rolling displacement (3) when rolling resistance is on.
@@ -342,50 +368,26 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kn_used = res.stiffness, gn_used = res.damping;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * 2 E* a, tangent stiffness dF/dxi
     tp.gammat = 0.0;
-  } else if (mode == MODE_WALTON_BRAUN) {
-    // hysteretic: xi_max in history slot TANGENTIAL_HISTORY (after the tangential spring)
-    tdem::walton_braun::Params<double> wp;
-    wp.k_load = c.wb_kl;
-    wp.k_unload = c.wb_ku;
-    wp.slope = c.wb_s;
-    tdem::NormalKinematics<double> kin;
-    kin.overlap = overlap;
-    kin.overlap_rate = -vnnr * rinv;
-    kin.meff = meff;
-    kin.reff = 0.0;
-    const auto res = tdem::walton_braun::force(wp, kin, shear + toff, update);
-    ccel = res.force * rinv;
-    kn_used = res.stiffness, gn_used = res.damping;
-    tp.kt = c.kappa * c.wb_kl;
-    tp.gammat = 0.0;
-  } else if (mode == MODE_THORNTON) {
-    // elastic-perfectly plastic; xi_max, f_max in history slots 3, 4
-    const double reff = radj > 0.0 ? radi * radj / (radi + radj) : radi;
-    tdem::thornton::Params<double> thp;
-    thp.e_star = c.estar;
-    thp.p_y = c.th_py;
-    tdem::NormalKinematics<double> kin;
-    kin.overlap = overlap;
-    kin.overlap_rate = -vnnr * rinv;
-    kin.meff = meff;
-    kin.reff = reff;
-    const auto res = tdem::thornton::force(thp, kin, shear + toff, update);
-    ccel = res.force * rinv;
-    kn_used = res.stiffness, gn_used = res.damping;
-    tp.kt = c.kappa * 2.0 * c.estar * sqrt(reff * overlap);  // KAPPA * 2 E* a (Hertz tangent)
-    tp.gammat = 0.0;
-  } else if (mode == MODE_POWER_LAW) {
-    // power-law hysteresis; its history slots (xi_max ...) from slot 3 on; ends at zero force
-    tdem::NormalKinematics<double> kin;
-    kin.overlap = overlap;
-    kin.overlap_rate = -vnnr * rinv;
-    kin.meff = meff;
-    kin.reff = 0.0;
-    const auto res = tdem::power_law::force(c.pl, kin, shear + toff, update);
-    ccel = res.force * rinv;
-    kn_used = res.stiffness, gn_used = res.damping;
-    tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi of the branch in use
-    tp.gammat = 0.0;
+  } else if (is_unit(mode)) {
+    // a unit (src/contact/law_unit.h): its kernel on its history slots after the tangential block
+    auto normal = [&](auto tag) {
+      using U = typename decltype(tag)::type;
+      tdem::NormalKinematics<double> kin;
+      kin.overlap = overlap;
+      kin.overlap_rate = -vnnr * rinv;
+      kin.meff = meff;
+      kin.reff = U::needs_reff ? (radj > 0.0 ? radi * radj / (radi + radj) : radi) : 0.0;
+      const auto p = c.up.get<typename U::Params>();
+      const auto res = U::force(p, kin, shear + toff, update);
+      ccel = res.force * rinv;
+      kn_used = res.stiffness, gn_used = res.damping;
+      tp.kt = c.kappa * U::tangential_basis(p, res, kin);
+      tp.gammat = 0.0;
+    };
+    if constexpr (M >= MODE_UNIT)
+      normal(tdem::law::Tag<UnitOf<M>>{});
+    else
+      tdem::law::visit<NormalUnits>(mode - MODE_UNIT, normal);
   } else if (mode == MODE_EXT_LINEAR) {
     // k(v0), gamma(v0) fixed at first touch; v0, k, gamma in history slots 3..5
     tdem::NormalKinematics<double> kin;
@@ -501,6 +503,12 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
                                       update, shear, troll);
 }
 
+// The path of the k-th unit: run<MODE_UNIT + k, -1, -1>().
+template <class F, int... K>
+inline void dispatch_unit(int k, F &f, std::integer_sequence<int, K...>) {
+  static_cast<void>(((k == K ? (f.template run<MODE_UNIT + K, -1, -1>(), true) : false) || ...));
+}
+
 // Dispatch helper: calls F.template run<M,E,S>() for the combination (all compile-time; the
 // laws other than lsd with the law fixed at compile time and end, slip read at run time) or
 // the run-time fallback run<-1,-1,-1>() when `uniform` is false.
@@ -531,9 +539,9 @@ inline void dispatch(bool uniform, int mode, int end, int slip, int tlaw, F &&f)
 #undef TDEM_LMP_CASE
 #define TDEM_LMP_CASE(m) \
   if (mode == m) return f.template run<m, -1, -1>();
-  TDEM_LMP_CASE(MODE_HERTZ) TDEM_LMP_CASE(MODE_WALTON_BRAUN) TDEM_LMP_CASE(MODE_THORNTON)
-  TDEM_LMP_CASE(MODE_POWER_LAW) TDEM_LMP_CASE(MODE_EXT_LINEAR) TDEM_LMP_CASE(MODE_EXT_HERTZ)
+  TDEM_LMP_CASE(MODE_HERTZ) TDEM_LMP_CASE(MODE_EXT_LINEAR) TDEM_LMP_CASE(MODE_EXT_HERTZ)
 #undef TDEM_LMP_CASE
+  if (is_unit(mode)) return dispatch_unit(mode - MODE_UNIT, f, std::make_integer_sequence<int, NormalUnits::size>());
   f.template run<-1, -1, -1>();
 }
 

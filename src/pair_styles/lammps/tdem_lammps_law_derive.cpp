@@ -76,12 +76,17 @@ void derive_normal(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
     }
     return;
   }
-  if (c.mode == MODE_THORNTON) {
-    try {
-      c.estar = tdem::hertz::effective_modulus(c.E1, c.nu1, c.E2, c.nu2);
-    } catch (const std::exception &ex) {
-      fail(lmp, where, std::string("normal thornton: ") + ex.what());
-    }
+  if (is_unit(c.mode)) {  // the unit's parameters from its values (E* for a law with materials)
+    tdem::law::visit<NormalUnits>(c.mode - MODE_UNIT, [&](auto tag) {
+      using U = typename decltype(tag)::type;
+      try {
+        double v[tdem::law::MAX_UNIT_VALUES];
+        tdem::law::unit_values(U::description, c.uv, v);
+        c.up = tdem::law::store<U>(v);
+      } catch (const std::exception &ex) {
+        fail(lmp, where, std::string("normal ") + U::description.name + ": " + ex.what());
+      }
+    });
     return;
   }
   if (c.mode == MODE_HERTZ) {
@@ -108,6 +113,46 @@ void derive_normal(LAMMPS *lmp, const std::string &where, LawCoeffs &c) {
     fail(lmp, where,
          "normal lsd restitution E = " + num(c.e) + ", TC = " + num(c.tc) +
              " gives no finite stiffness and damping");
+}
+
+const char *normal_name(const LawCoeffs &c) {
+  if (is_unit(c.mode)) return NormalUnits::descriptions[c.mode - MODE_UNIT]->name;
+  return c.mode == MODE_HERTZ        ? "hertz"
+         : c.mode == MODE_EXT_LINEAR ? "extended_linear"
+         : c.mode == MODE_EXT_HERTZ  ? "extended_hertz"
+                                     : "lsd";
+}
+
+std::string material_law_names() {
+  std::string s = "hertz";
+  for (const tdem::law::Description *d : tdem::law::normal_laws)
+    if (d->materials) s += std::string("/") + d->name;
+  return s + "/extended_hertz";
+}
+
+int mode_of_name(const char *name, int stored_mode) {
+  const int k = tdem::law::index_of<NormalUnits>(name);
+  if (k >= 0) return MODE_UNIT + k;
+  const std::string n = name;
+  if (n == "hertz") return MODE_HERTZ;
+  if (n == "extended_linear") return MODE_EXT_LINEAR;
+  if (n == "extended_hertz") return MODE_EXT_HERTZ;
+  if (n == "lsd" && stored_mode >= MODE_STIFFNESS_MASS && stored_mode <= MODE_RESTITUTION) return stored_mode;
+  return -1;
+}
+
+void read_legacy_units(LawCoeffs &c) {
+  const char *name = c.mode == LEGACY_MODE_WALTON_BRAUN ? "walton_braun"
+                     : c.mode == LEGACY_MODE_THORNTON   ? "thornton"
+                     : c.mode == LEGACY_MODE_POWER_LAW  ? "power_law"
+                                                        : nullptr;
+  if (!name) return;
+  const double wb[3] = {c.legacy_wb_kl, c.legacy_wb_ku, c.legacy_wb_s};
+  const double th[5] = {c.E1, c.nu1, c.E2, c.nu2, c.legacy_th_py};
+  const double *v = c.mode == LEGACY_MODE_WALTON_BRAUN ? wb : c.mode == LEGACY_MODE_THORNTON ? th : c.legacy_pl;
+  const int n = c.mode == LEGACY_MODE_WALTON_BRAUN ? 3 : c.mode == LEGACY_MODE_THORNTON ? 5 : 4;
+  c.mode = MODE_UNIT + tdem::law::index_of<NormalUnits>(name);
+  for (int k = 0; k < tdem::law::MAX_UNIT_VALUES; ++k) c.uv[k] = k < n ? v[k] : 0.0;
 }
 
 const char *tangential_name(int tlaw) {
@@ -149,10 +194,20 @@ std::string describe_normal(const LawCoeffs &c) {
     for (int k = 0; k < tdem::fits::coefficient_count(f.form, what); ++k) t += " " + num(f.c[k]);
     return t;
   };
-  if (c.mode == MODE_POWER_LAW) {
-    s = "normal power_law al=" + num(c.pl.a_load) + " p=" + num(c.pl.p) + " aul=" +
-        num(c.pl.a_unload) + " q=" + num(c.pl.q) + " tangential cundall_strack kappa=" +
-        num(c.kappa) + " (kt = kappa dF/dxi) mu=" + num(c.mu);
+  if (is_unit(c.mode)) {  // its values by name, E* of a law with materials, kt = kappa * its basis
+    tdem::law::visit<NormalUnits>(c.mode - MODE_UNIT, [&](auto tag) {
+      using U = typename decltype(tag)::type;
+      constexpr const tdem::law::Description &d = U::description;
+      double u[tdem::law::MAX_UNIT_VALUES];
+      tdem::law::unit_values(d, c.uv, u);
+      s = std::string("normal ") + d.name;
+      for (int k = 0; k < tdem::law::value_count(d); ++k) {
+        s += std::string(" ") + tdem::law::parameter(d, k).name + "=" + num(c.uv[k]);
+        if (d.materials && k + 1 == tdem::law::MATERIAL_VALUES) s += " (E*=" + num(u[0]) + ")";
+      }
+      s += std::string(" tangential cundall_strack kappa=") + num(c.kappa) + " (kt = kappa " +
+           U::tangential_basis_text + ") mu=" + num(c.mu);
+    });
   } else if (c.mode == MODE_EXT_LINEAR) {
     s = "normal extended_linear e_fit " + fit(c.ext.e_fit, 'e') + " tc_fit " + fit(c.ext.tc_fit, 't') +
         " v_min=" + num(c.ext.range.v_min) + " v_max=" + num(c.ext.range.v_max) +
@@ -162,13 +217,6 @@ std::string describe_normal(const LawCoeffs &c) {
         " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") e_fit " + fit(c.ext.e_fit, 'e') +
         " v_min=" + num(c.ext.range.v_min) + " v_max=" + num(c.ext.range.v_max) +
         " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa dF/dxi) mu=" + num(c.mu);
-  } else if (c.mode == MODE_THORNTON) {
-    s = "normal thornton E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +
-        " nu2=" + num(c.nu2) + " (E*=" + num(c.estar) + ") py=" + num(c.th_py) +
-        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa 2 E* a) mu=" + num(c.mu);
-  } else if (c.mode == MODE_WALTON_BRAUN) {
-    s = "normal walton_braun kl=" + num(c.wb_kl) + " ku=" + num(c.wb_ku) + " s=" + num(c.wb_s) +
-        " tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa kl) mu=" + num(c.mu);
   } else if (c.mode == MODE_HERTZ) {
     static const char *const dn[] = {"linear", "kuwabara_kono", "tsuji", "general"};
     s = "normal hertz E1=" + num(c.E1) + " nu1=" + num(c.nu1) + " E2=" + num(c.E2) +

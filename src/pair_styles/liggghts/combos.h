@@ -29,8 +29,12 @@ namespace combos {
 using namespace LIGGGHTS::ContactModels;
 
 // ---------------------------------------------------------------- the lists of laws
-inline constexpr int tdem_normals[] = {TDEM_LSD,       TDEM_HERTZ,           TDEM_WALTON_BRAUN, TDEM_THORNTON,
-                                       TDEM_POWER_LAW, TDEM_EXTENDED_LINEAR, TDEM_EXTENDED_HERTZ};
+// (the laws that are units, TDEM_LIGGGHTS_UNITS of tdem_liggghts_ids.h, between hertz and the
+// extended laws)
+#define TDEM_UNIT_ID(constant, id, ns) constant,
+inline constexpr int tdem_normals[] = {TDEM_LSD, TDEM_HERTZ, TDEM_LIGGGHTS_UNITS(TDEM_UNIT_ID) TDEM_EXTENDED_LINEAR,
+                                       TDEM_EXTENDED_HERTZ};
+#undef TDEM_UNIT_ID
 inline constexpr int tdem_tangentials[] = {TDEM_HAFF_WERNER,         TDEM_LINEAR_SPRING,   TDEM_WALTON_BRAUN_T,
                                            TDEM_MINDLIN_DERESIEWICZ, TDEM_MINDLIN_NO_SLIP, TDEM_DI_RENZO};
 inline constexpr int basic_tangentials[] = {TDEM_CUNDALL_STRACK, TANGENTIAL_HISTORY, TANGENTIAL_OFF};
@@ -71,7 +75,8 @@ constexpr List build() {
     for (int n : stock_normals) l.add(n, t);
     l.next_group();
   }
-  for (int k = 0; k < 7; ++k) {  // clumps: tdem/lsd .. tdem/thornton, then the rest
+  constexpr int nn = sizeof(tdem_normals) / sizeof(tdem_normals[0]);
+  for (int k = 0; k < nn; ++k) {  // clumps: the first four normal laws, then the rest
     const int n = tdem_normals[k];
     if (k == 4) l.next_group();
     for (int t : basic_tangentials) l.add_clump(n, t);

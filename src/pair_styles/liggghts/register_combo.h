@@ -15,10 +15,8 @@
 
 #include "normal_model_tdem_lsd.h"
 #include "normal_model_tdem_hertz.h"
-#include "normal_model_tdem_walton_braun.h"
-#include "normal_model_tdem_thornton.h"
+#include "normal_model_tdem_history.h"
 #include "normal_model_tdem_continuous_potential.h"
-#include "normal_model_tdem_power_law.h"
 #include "normal_model_tdem_extended_linear.h"
 #include "normal_model_tdem_extended_hertz.h"
 #include "tangential_model_tdem_cundall_strack.h"

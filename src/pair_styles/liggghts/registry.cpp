@@ -77,10 +77,10 @@ const Names& names() {
 #undef SURFACE_MODEL
     r.normal[TDEM_LSD] = kNormalLsdName;
     r.normal[TDEM_HERTZ] = kNormalHertzName;
-    r.normal[TDEM_WALTON_BRAUN] = kNormalWaltonBraunName;
-    r.normal[TDEM_THORNTON] = kNormalThorntonName;
+#define TDEM_UNIT_NAME(constant, id, ns) r.normal[constant] = unit_model<tdem::ns::Law>();
+    TDEM_LIGGGHTS_UNITS(TDEM_UNIT_NAME)
+#undef TDEM_UNIT_NAME
     r.normal[TDEM_CONTINUOUS_POTENTIAL] = kNormalContinuousPotentialName;
-    r.normal[TDEM_POWER_LAW] = kNormalPowerLawName;
     r.normal[TDEM_EXTENDED_LINEAR] = kNormalExtendedLinearName;
     r.normal[TDEM_EXTENDED_HERTZ] = kNormalExtendedHertzName;
     r.tangential[TDEM_CUNDALL_STRACK] = kTangentialCundallStrackName;
@@ -173,11 +173,9 @@ int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models
   }
   const int normal = static_cast<int>(hash & 63), tangential = static_cast<int>((hash >> 6) & 63);
   const int rolling = static_cast<int>((hash >> 18) & 63), surface = static_cast<int>((hash >> 24) & 63);
-  if ((normal == TDEM_LSD || normal == TDEM_HERTZ || normal == TDEM_WALTON_BRAUN ||
-       normal == TDEM_THORNTON || normal == TDEM_CONTINUOUS_POTENTIAL || normal == TDEM_POWER_LAW ||
-       normal == TDEM_EXTENDED_LINEAR || normal == TDEM_EXTENDED_HERTZ || tangential == TDEM_CUNDALL_STRACK ||
-       (tangential >= TDEM_HAFF_WERNER && tangential <= TDEM_DI_RENZO) || surface == TDEM_CLUMP_SURFACE ||
-       rolling == TDEM_SDS) &&
+  // a tdem model in any slot (tdem ids are TDEM_FIRST_ID and up, stock ids below)
+  if ((normal >= TDEM_FIRST_ID || tangential >= TDEM_FIRST_ID || surface >= TDEM_FIRST_ID ||
+       rolling >= TDEM_FIRST_ID) &&
       !compiled().count(hash)) {
     std::string list;
     for (int64_t h : compiled()) list += "\n  " + describe(h);
@@ -206,10 +204,10 @@ void register_styles() {
   Factory& models = Factory::instance();
   models.addNormalModel(kNormalLsdName, TDEM_LSD);
   models.addNormalModel(kNormalHertzName, TDEM_HERTZ);
-  models.addNormalModel(kNormalWaltonBraunName, TDEM_WALTON_BRAUN);
-  models.addNormalModel(kNormalThorntonName, TDEM_THORNTON);
+#define TDEM_UNIT_MODEL(constant, id, ns) models.addNormalModel(unit_model<tdem::ns::Law>(), constant);
+  TDEM_LIGGGHTS_UNITS(TDEM_UNIT_MODEL)
+#undef TDEM_UNIT_MODEL
   models.addNormalModel(kNormalContinuousPotentialName, TDEM_CONTINUOUS_POTENTIAL);
-  models.addNormalModel(kNormalPowerLawName, TDEM_POWER_LAW);
   models.addNormalModel(kNormalExtendedLinearName, TDEM_EXTENDED_LINEAR);
   models.addNormalModel(kNormalExtendedHertzName, TDEM_EXTENDED_HERTZ);
   models.addTangentialModel(kTangentialCundallStrackName, TDEM_CUNDALL_STRACK);

@@ -25,15 +25,14 @@
 #include "contact/normal/extended.h"
 #include "contact/normal/hertz_damped.h"
 #include "contact/normal/linear_viscoelastic.h"
-#include "contact/normal/power_law_hysteresis.h"
-#include "contact/normal/thornton.h"
-#include "contact/normal/walton_braun.h"
+#include "contact/law_unit.h"
 
 namespace tdem {
 namespace liggghts {
 namespace advice {
 
-enum class Law { lsd, hertz, walton_braun, thornton, power_law, continuous_potential, extended_linear, extended_hertz };
+// `unit`: a normal law of src/contact/laws.h (normal_units), Entry::unit its index there.
+enum class Law { lsd, hertz, continuous_potential, extended_linear, extended_hertz, unit };
 
 // One contact for which the coefficients are asked.
 struct PairData {
@@ -48,9 +47,7 @@ struct PairData {
 struct Coefficients {
   lsd::Coefficients<double> lsd{0.0, 0.0};
   hertz::Params<double> hertz{0.0, 0.0, 0.0};
-  walton_braun::Params<double> walton_braun{0.0, 0.0, 0.0};
-  thornton::Params<double> thornton{0.0, 0.0};
-  power_law::Params<double> power_law{0.0, 0.0, 0.0, 0.0};
+  law::ParamStore unit{};  // the unit's Params
   continuous_potential::Params<double> potential{0.0, 0.0, 0.0, 0.0, 0.0};
   extended::LinearParams extended_linear{};
   extended::HertzParams extended_hertz{};
@@ -59,6 +56,7 @@ struct Coefficients {
 struct Entry {
   const void* model = nullptr;  // the publishing model (withdraw only removes its own entry)
   Law law = Law::lsd;
+  int unit = -1;  // Law::unit: index in tdem::law::normal_units
   std::string name;      // "tdem/lsd", ...
   std::string settings;  // the model settings in force, e.g. "parameters stiffness, limitForce on"
   ContactEnd end = ContactEnd::zero_overlap;      // limitForce off | on

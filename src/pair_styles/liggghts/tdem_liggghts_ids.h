@@ -8,16 +8,27 @@
 // the hash (and with it a restart file) of a tdem model is stable as long as these stay put.
 #pragma once
 
+// The normal laws that are units (src/contact/law_unit.h, listed in src/contact/laws.h), one line
+// each: X(constant, model id, namespace of the law). The model is `model tdem/<name>` with the
+// name of the law's description; normal_model_tdem_history.h defines it from the unit.
+#define TDEM_LIGGGHTS_UNITS(X)           \
+  X(TDEM_WALTON_BRAUN, 42, walton_braun) \
+  X(TDEM_THORNTON, 43, thornton)         \
+  X(TDEM_POWER_LAW, 45, power_law)
+
 namespace LIGGGHTS {
 namespace ContactModels {
+
+static const int TDEM_FIRST_ID = 40;        // the smallest tdem id of every model kind
+
+#define TDEM_LIGGGHTS_UNIT_ID(constant, id, ns) static const int constant = id;
+TDEM_LIGGGHTS_UNITS(TDEM_LIGGGHTS_UNIT_ID)
+#undef TDEM_LIGGGHTS_UNIT_ID
 
 static const int TDEM_LSD = 40;             // model tdem/lsd
 static const int TDEM_CUNDALL_STRACK = 40;  // tangential tdem/cundall_strack
 static const int TDEM_HERTZ = 41;           // model tdem/hertz
-static const int TDEM_WALTON_BRAUN = 42;    // model tdem/walton_braun
-static const int TDEM_THORNTON = 43;        // model tdem/thornton
 static const int TDEM_CONTINUOUS_POTENTIAL = 44;  // model tdem/continuous_potential
-static const int TDEM_POWER_LAW = 45;             // model tdem/power_law
 static const int TDEM_EXTENDED_LINEAR = 46;       // model tdem/extended_linear
 static const int TDEM_EXTENDED_HERTZ = 47;        // model tdem/extended_hertz
 // tangential laws of issue 4 (tangential ids 41 upwards, after tdem/cundall_strack = 40)
@@ -39,10 +50,7 @@ namespace liggghts {
 inline constexpr const char* kNormalLsdName = "tdem/lsd";
 inline constexpr const char* kTangentialCundallStrackName = "tdem/cundall_strack";
 inline constexpr const char* kNormalHertzName = "tdem/hertz";
-inline constexpr const char* kNormalWaltonBraunName = "tdem/walton_braun";
-inline constexpr const char* kNormalThorntonName = "tdem/thornton";
 inline constexpr const char* kNormalContinuousPotentialName = "tdem/continuous_potential";
-inline constexpr const char* kNormalPowerLawName = "tdem/power_law";
 inline constexpr const char* kNormalExtendedLinearName = "tdem/extended_linear";
 inline constexpr const char* kNormalExtendedHertzName = "tdem/extended_hertz";
 inline constexpr const char* kTangentialHaffWernerName = "tdem/haff_werner";

@@ -111,18 +111,6 @@ const MatrixPropertyCreator create_restitution_fit[3] = {&create_restitution_fit
 const MatrixPropertyCreator create_contact_time_fit[2] = {&create_contact_time_fit_i<0>,
                                                           &create_contact_time_fit_i<1>};
 
-MatrixProperty* create_loading_coefficient(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "loadingCoefficient", caller, Range::positive);
-}
-MatrixProperty* create_loading_exponent(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "loadingExponent", caller, Range::positive);
-}
-MatrixProperty* create_unloading_coefficient(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "unloadingCoefficient", caller, Range::positive);
-}
-MatrixProperty* create_unloading_exponent_increment(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "unloadingExponentIncrement", caller, Range::non_negative);
-}
 MatrixProperty* create_rolling_stiffness(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked(registry, "rollingStiffness", caller, Range::positive);
 }
@@ -137,6 +125,26 @@ ScalarProperty* create_impact_velocity_min(PropertyRegistry& registry, const cha
 }
 ScalarProperty* create_impact_velocity_max(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked_scalar(registry, "impactVelocityMax", caller, Range::positive);
+}
+
+MatrixProperty* create_parameter(PropertyRegistry& registry, const char* fix_name, const char* caller,
+                                 const tdem::law::Parameter& p) {
+  using tdem::law::Bound;
+  const Range r = p.bound == Bound::positive       ? Range::positive
+                  : p.bound == Bound::non_negative ? Range::non_negative
+                  : p.bound == Bound::restitution  ? Range::restitution
+                                                   : Range::finite;
+  return create_checked(registry, fix_name, caller, r);
+}
+
+void check_at_least(LAMMPS_NS::LAMMPS* lmp, const char* caller, const char* fix_name, int i, int j, double v,
+                    const char* ref_name, double ref) {
+  if (v >= ref) return;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s: fix property/global %s has value %s for atom types %d %d; allowed: %s >= %s (%s)", caller,
+                fix_name, format_value(v).c_str(), i, j, fix_name, ref_name, format_value(ref).c_str());
+  lmp->error->all(FLERR, buf);
 }
 
 bool has_scalar_property(LAMMPS_NS::LAMMPS* lmp, const char* fix_name, const char* caller) {
@@ -164,18 +172,6 @@ MatrixProperty* create_damping_coefficient(PropertyRegistry& registry, const cha
 }
 MatrixProperty* create_damping_exponent(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked(registry, "dampingExponent", caller, Range::non_negative);
-}
-MatrixProperty* create_loading_stiffness(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "loadingStiffness", caller, Range::positive);
-}
-MatrixProperty* create_unloading_stiffness(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "unloadingStiffness", caller, Range::positive);
-}
-MatrixProperty* create_unloading_slope(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "unloadingStiffnessSlope", caller, Range::non_negative);
-}
-MatrixProperty* create_yield_pressure(PropertyRegistry& registry, const char* caller, bool) {
-  return create_checked(registry, "yieldPressure", caller, Range::positive);
 }
 MatrixProperty* create_potential_energy(PropertyRegistry& registry, const char* caller, bool) {
   return create_checked(registry, "potentialEnergy", caller, Range::positive);

@@ -9,6 +9,8 @@
 
 #include "property_registry.h"
 
+#include "contact/law_parameters.h"
+
 namespace tdem {
 namespace liggghts {
 
@@ -20,16 +22,8 @@ inline constexpr const char* kPropStiffnessRatio = "tdem_tangentialStiffnessRati
 inline constexpr const char* kPropTangentialDampingRatio = "tdem_tangentialDampingRatio";  // >= 0
 inline constexpr const char* kPropDampingCoefficient = "tdem_dampingCoefficient";  // >= 0
 inline constexpr const char* kPropDampingExponent = "tdem_dampingExponent";        // >= 0
-inline constexpr const char* kPropLoadingStiffness = "tdem_loadingStiffness";      // > 0
-inline constexpr const char* kPropUnloadingStiffness = "tdem_unloadingStiffness";  // > 0
-inline constexpr const char* kPropUnloadingSlope = "tdem_unloadingStiffnessSlope"; // >= 0
-inline constexpr const char* kPropYieldPressure = "tdem_yieldPressure";            // > 0
 inline constexpr const char* kPropPotentialEnergy = "tdem_potentialEnergy";        // > 0
 inline constexpr const char* kPropPotentialExponent = "tdem_potentialExponent";    // > 0
-inline constexpr const char* kPropLoadingCoefficient = "tdem_loadingCoefficient";  // > 0
-inline constexpr const char* kPropLoadingExponent = "tdem_loadingExponent";        // > 0
-inline constexpr const char* kPropUnloadingCoefficient = "tdem_unloadingCoefficient";  // > 0
-inline constexpr const char* kPropUnloadingExponentIncrement = "tdem_unloadingExponentIncrement";  // >= 0
 inline constexpr const char* kPropRollingStiffness = "tdem_rollingStiffness";    // > 0
 inline constexpr const char* kPropRollingDamping = "tdem_rollingDamping";        // >= 0
 inline constexpr const char* kPropRollingFriction = "tdem_coefficientRollingFriction";  // >= 0
@@ -47,16 +41,8 @@ MatrixProperty* create_stiffness_ratio(PropertyRegistry& registry, const char* c
 MatrixProperty* create_tangential_damping_ratio(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_damping_coefficient(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_damping_exponent(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_loading_stiffness(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_unloading_stiffness(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_unloading_slope(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_yield_pressure(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_potential_energy(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_potential_exponent(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_loading_coefficient(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_loading_exponent(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_unloading_coefficient(PropertyRegistry& registry, const char* caller, bool);
-MatrixProperty* create_unloading_exponent_increment(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_rolling_stiffness(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_rolling_damping(PropertyRegistry& registry, const char* caller, bool);
 MatrixProperty* create_rolling_friction(PropertyRegistry& registry, const char* caller, bool);
@@ -64,6 +50,14 @@ extern const MatrixPropertyCreator create_restitution_fit[3];
 extern const MatrixPropertyCreator create_contact_time_fit[2];
 ScalarProperty* create_impact_velocity_min(PropertyRegistry& registry, const char* caller, bool);
 ScalarProperty* create_impact_velocity_max(PropertyRegistry& registry, const char* caller, bool);
+
+// The per-type-pair property `fix_name` of parameter p of a unit law (src/contact/law_unit.h),
+// checked against p's bound (Bound::at_least: finite here; check_at_least compares the values).
+MatrixProperty* create_parameter(PropertyRegistry& registry, const char* fix_name, const char* caller,
+                                 const tdem::law::Parameter& p);
+// error->all unless v >= ref (a Bound::at_least parameter `fix_name` against `ref_name`).
+void check_at_least(LAMMPS_NS::LAMMPS* lmp, const char* caller, const char* fix_name, int i, int j, double v,
+                    const char* ref_name, double ref);
 
 // Is there a `fix property/global <fix_name> scalar ...`? (Optional scalar properties.)
 bool has_scalar_property(LAMMPS_NS::LAMMPS* lmp, const char* fix_name, const char* caller);

@@ -108,7 +108,7 @@ CASES = [
     ("power_law negative Q", pair("normal power_law 1e7 1.5 3e7 -0.5 tangential cundall_strack 0.8 0.5"),
      ["normal power_law Q (extra unloading exponent) = -0.5 must be >= 0"]),
     ("power_law damping", pair("normal power_law 1e7 1.5 3e7 tangential cundall_strack 0.8 0.5 damping mass"),
-     ["keyword 'damping mass' applies to 'normal lsd stiffness' only", "power_law have no damping"]),
+     ["keyword 'damping mass' applies to 'normal lsd stiffness' only", "power_law has no damping"]),
     # normal extended_linear
     ("ext_linear missing e_fit", pair("normal extended_linear tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
      ["normal extended_linear needs 'e_fit constant|rational|power C0 ..', got 'tc_fit'"]),

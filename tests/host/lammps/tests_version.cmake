@@ -3,7 +3,7 @@
 # test names ${_pfx}.<test>, label ${_lbl}, arguments ${_args} (--tdem, --lmp, --plugin, ...).
 
 foreach(t equivalence granular_models restitution parallel_restart plugin examples bad_input hertz walton_braun
-          thornton rolling)
+          thornton rolling restart_legacy)
   add_test(NAME ${_pfx}.${t}
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_${t}.py ${_args})
   set_tests_properties(${_pfx}.${t} PROPERTIES LABELS ${_lbl} TIMEOUT 600)

@@ -64,37 +64,6 @@ void law_row(const tdem_lammps::LawCoeffs &c, th::Row &r)
       };
       break;
     }
-    case MODE_WALTON_BRAUN: {
-      const tdem::walton_braun::Params<double> p{c.wb_kl, c.wb_ku, c.wb_s};
-      r.advise = [p](const ta::Input &in) { return ta::for_walton_braun(p, in); };
-      r.stiffness = [p](double xi, double &k, double &g) {  // unloading from F_max = k_l xi
-        k = p.k_unload + p.slope * p.k_load * xi, g = 0.0;
-        return true;
-      };
-      break;
-    }
-    case MODE_THORNTON: {
-      const tdem::thornton::Params<double> p{c.estar, c.th_py};
-      r.advise = [p](const ta::Input &in) { return ta::for_thornton(p, in); };
-      r.stiffness = [p, reff](double xi, double &k, double &g) {  // elastic unloading tangent
-        k = 2.0 * p.e_star * std::sqrt(reff * xi), g = 0.0;
-        return true;
-      };
-      break;
-    }
-    case MODE_POWER_LAW: {
-      const tdem::power_law::Params<double> p = c.pl;
-      r.advise = [p](const ta::Input &in) { return ta::for_power_law(p, in); };
-      r.stiffness = [p](double xi, double &k, double &g) {  // as the core at xi_max = xi
-        const double f = p.a_load * std::pow(xi, p.p);
-        const double d = tdem::power_law::unloading_amplitude(p, xi);
-        k = p.p * f / xi;
-        if (d <= xi) k = std::max(k, (p.p + p.q) * f / d);
-        g = 0.0;
-        return true;
-      };
-      break;
-    }
     case MODE_EXT_LINEAR: {
       const tdem::extended::LinearParams p = c.ext;
       r.advise = [p, end](const ta::Input &in) { return ta::for_extended_linear(end, p, in); };
@@ -106,7 +75,19 @@ void law_row(const tdem_lammps::LawCoeffs &c, th::Row &r)
       break;
     }
     default:
-      r.supported = false;
+      if (!is_unit(c.mode)) {
+        r.supported = false;
+        break;
+      }
+      tdem::law::visit<NormalUnits>(c.mode - MODE_UNIT, [&](auto tag) {  // a unit (src/contact/laws.h)
+        using U = typename decltype(tag)::type;
+        const auto p = c.up.get<typename U::Params>();
+        r.advise = [p](const ta::Input &in) { return ta::for_law<U>(p, in); };
+        r.stiffness = [p, reff](double xi, double &k, double &g) {  // the largest tangent with xi_max = xi
+          k = U::stiffness_at(p, reff, xi), g = 0.0;
+          return true;
+        };
+      });
   }
 }
 
@@ -125,7 +106,7 @@ ta::Material smaller_rayleigh(const ta::Material &a, const ta::Material &b)
 bool has_material(int mode)
 {
   using namespace tdem_lammps;
-  return mode == MODE_HERTZ || mode == MODE_THORNTON || mode == MODE_EXT_HERTZ;
+  return mixes_materials(mode);
 }
 
 }  // namespace

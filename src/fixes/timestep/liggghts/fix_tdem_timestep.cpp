@@ -28,6 +28,7 @@
 #include "neigh_list.h"
 #include "pair.h"
 #include "pair_gran.h"
+#include "contact/laws.h"
 #include "tdem_liggghts_advice.h"
 #include "update.h"
 
@@ -43,16 +44,26 @@ constexpr double kBig = std::numeric_limits<double>::max();
 
 std::string str(double v) { return th::num(v); }
 
+// The tdem normal laws: lsd, hertz, the units of src/contact/laws.h, then the rest.
+const std::vector<std::string>& tdem_laws() {
+  static const std::vector<std::string> v = [] {
+    std::vector<std::string> m = {"tdem/lsd", "tdem/hertz"};
+    for (const tdem::law::Description* d : tdem::law::normal_laws) m.push_back(std::string("tdem/") + d->name);
+    for (const char* s : {"tdem/continuous_potential", "tdem/extended_linear", "tdem/extended_hertz"}) m.push_back(s);
+    return m;
+  }();
+  return v;
+}
+
 // normal laws pair gran / fix wall/gran may use (for the name in the table and the warnings)
-const char* const kModels[] = {"tdem/lsd", "tdem/hertz", "tdem/walton_braun", "tdem/thornton",
-                               "tdem/continuous_potential", "tdem/power_law", "tdem/extended_linear",
-                               "tdem/extended_hertz", "hooke", "hooke/stiffness", "hooke/hysteresis",
-                               "hertz", "hertz/stiffness", "thorntonning", "edinburgh", "edinburgh/stiffness",
-                               "luding", "off"};
+const char* const kStockModels[] = {"hooke", "hooke/stiffness", "hooke/hysteresis", "hertz", "hertz/stiffness",
+                                    "thorntonning", "edinburgh", "edinburgh/stiffness", "luding", "off"};
 
 template <class Obj>
 std::string model_of(Obj* o) {
-  for (const char* m : kModels)
+  for (const std::string& m : tdem_laws())
+    if (o->contact_match("normal", m.c_str())) return m;
+  for (const char* m : kStockModels)
     if (o->contact_match("normal", m)) return m;
   return "";
 }
@@ -81,13 +92,18 @@ ta::Advice smallest(const std::vector<Candidate>& cs, const ta::Input& in) {
 
 const tdem::ContactEnd kEnds[2] = {tdem::ContactEnd::zero_overlap, tdem::ContactEnd::zero_force};
 
-const std::string kTdemLaws =
-    "tdem/lsd, tdem/hertz, tdem/walton_braun, tdem/thornton, tdem/power_law, tdem/continuous_potential, "
-    "tdem/extended_linear, tdem/extended_hertz";
+std::string tdem_law_list() {
+  std::string s;
+  for (const std::string& m : tdem_laws()) s += (s.empty() ? "" : ", ") + m;
+  return s;
+}
 
 // laws whose table rows carry the Rayleigh time of the smaller particle
 bool hertz_type(const std::string& model) {
-  return model == "tdem/hertz" || model == "hertz" || model == "tdem/thornton" || model == "tdem/extended_hertz";
+  if (model == "tdem/hertz" || model == "hertz" || model == "tdem/extended_hertz") return true;
+  for (const tdem::law::Description* d : tdem::law::normal_laws)  // the units with materials
+    if (d->materials && model == std::string("tdem/") + d->name) return true;
+  return false;
 }
 
 }  // namespace
@@ -198,28 +214,6 @@ bool FixTDEMTimestep::published_row(const void* owner, int i, int j, bool wall, 
       };
       break;
     }
-    case ad::Law::walton_braun: {
-      r.advise = [coef, named](const ta::Input& in) { return named(ta::for_walton_braun(coef(in).walton_braun, in)); };
-      const tdem::walton_braun::Params<double> p = coef(ta::Input{r.meff, r.reff}).walton_braun;
-      r.stiffness = [p](double xi, double& k, double& c) {  // unloading from xi_max = xi
-        k = tdem::walton_braun::unloading_stiffness(p, xi), c = 0.0;
-        return true;
-      };
-      break;
-    }
-    case ad::Law::thornton: {
-      r.advise = [coef, named](const ta::Input& in) { return named(ta::for_thornton(coef(in).thornton, in)); };
-      const tdem::thornton::Params<double> p = coef(ta::Input{r.meff, r.reff}).thornton;
-      const double reff = r.reff;
-      r.stiffness = [p, reff](double xi, double& k, double& c) {  // the unloading tangent at xi_max = xi
-        k = 2.0 * p.e_star * std::sqrt(reff * xi), c = 0.0;
-        return true;
-      };
-      break;
-    }
-    case ad::Law::power_law:
-      r.advise = [coef, named](const ta::Input& in) { return named(ta::for_power_law(coef(in).power_law, in)); };
-      break;
     case ad::Law::continuous_potential: {
       r.advise = [coef, end, named](const ta::Input& in) {
         return named(ta::for_continuous_potential(end, coef(in).potential, in));
@@ -242,6 +236,19 @@ bool FixTDEMTimestep::published_row(const void* owner, int i, int j, bool wall, 
       r.advise = [coef, end, named](const ta::Input& in) {
         return named(ta::for_extended_hertz(end, coef(in).extended_hertz, in));
       };
+      break;
+    case ad::Law::unit:
+      tdem::law::visit<tdem::law::normal_units>(e.unit, [&](auto tag) {
+        using U = typename decltype(tag)::type;
+        using P = typename U::Params;
+        r.advise = [coef, named](const ta::Input& in) { return named(ta::for_law<U>(coef(in).unit.template get<P>(), in)); };
+        const P p = coef(ta::Input{r.meff, r.reff}).unit.template get<P>();
+        const double reff = r.reff;
+        r.stiffness = [p, reff](double xi, double& k, double& c) {  // the largest tangent with xi_max = xi
+          k = U::stiffness_at(p, reff, xi), c = 0.0;
+          return true;
+        };
+      });
       break;
   }
   return true;
@@ -454,7 +461,7 @@ void FixTDEMTimestep::build_rows(double v_setup) {
   for (const th::Row& r : rows_)
     if (!r.supported)
       warnings.push_back("the law of " + r.what + " (" + r.law +
-                         ") is not supported (supported: the tdem normal laws " + kTdemLaws +
+                         ") is not supported (supported: the tdem normal laws " + tdem_law_list() +
                          ", and hooke, hooke/stiffness, hertz); no advice");
   if (comm->me == 0)
     for (const std::string& w : warnings) error->warning(FLERR, (std::string("fix ") + id + " tdem/timestep: " + w).c_str());
