@@ -15,6 +15,7 @@
 
 #include "law_parameters.h"
 #include "law_unit.h"
+#include "normal/luding.h"
 #include "normal/power_law_hysteresis.h"
 #include "normal/thornton.h"
 #include "normal/walton_braun.h"
@@ -32,7 +33,7 @@ namespace law {
 
 // The normal laws as units, in the order of their LAMMPS law numbers (stable only within one
 // build: restart files store the law's name).
-using normal_units = Units<walton_braun::Law, thornton::Law, power_law::Law>;
+using normal_units = Units<walton_braun::Law, thornton::Law, power_law::Law, luding::Law>;
 
 // Their descriptions.
 inline constexpr const auto& normal_laws = normal_units::descriptions;

@@ -151,6 +151,29 @@ if j:
 j = collide(f"--law thornton --params {E},{nu},{py} --R1 {R} --rho {rho} --wall --v0 1")
 if j:
     check("thornton --params e", j["e"], e_th, 1e-6)
+# luding (docs/adding_a_law.md), closed forms of Luding's law without adhesion, re-typed here:
+# xi_lim = k2max/(k2max-k1) phi 2 R*; below: e = sqrt(k1/k2(xi_max)), k2 = k1 + (k2max-k1) xi_max/xi_lim;
+# beyond: elastic on the k2max line about xi_0 = xi_lim (1 - k1/k2max)
+def luding_closed(k1, k2m, phi, m, r, v):
+    xl = k2m / (k2m - k1) * phi * 2 * r
+    a = v * math.sqrt(m / k1)
+    if a < xl:
+        k2 = k1 + (k2m - k1) * a / xl
+        return math.sqrt(k1 / k2), 0.5 * math.pi * (math.sqrt(m / k1) + math.sqrt(m / k2)), a
+    x0 = xl * (1 - k1 / k2m)
+    w = math.sqrt(k2m / m)
+    b = math.sqrt((xl - x0) ** 2 + (v * v - k1 * xl * xl / m) / (w * w))
+    return w * b / v, math.sqrt(m / k1) * math.asin(xl / a) + (math.pi - math.asin((xl - x0) / b)) / w, x0 + b
+
+
+for phi, regime in ((0.05, "below xi_lim"), (0.01, "beyond xi_lim")):
+    e_l, tc_l, xm_l = luding_closed(1e5, 5e5, phi, 0.01, 0.005, 1.0)
+    j = collide(f"--law luding --params 1e5,5e5,{phi} --m1 0.01 --R1 0.005 --wall --v0 1")
+    if j:
+        check(f"luding {regime} e", j["e"], e_l, 1e-6)
+        check(f"luding {regime} t_c", j["contact_time"], tc_l, 1e-6)
+        check(f"luding {regime} xi_max", j["max_overlap"], xm_l, 1e-6)
+        check(f"luding {regime} dissipated energy", j["dissipated_energy"], 0.5 * 0.01 * (1 - e_l**2), 1e-5)
 # power law with q = 0: e = (a_l / a_ul)^(1/(2p)) for every v0
 j = collide("--law power_law --params 1e7,1.5,4e7 --m1 0.01 --wall --v0 1")
 if j:
@@ -299,6 +322,8 @@ bad = [
     ("--law thornton --params 2e11,0.3,-1 --R1 0.005 --rho 7850 --wall --v0 1",
      "PY (limiting contact pressure) = -1 must be > 0"),
     ("--law walton_braun --params 1e5,abc --m1 0.01 --wall --v0 1", "--params: 'abc' is not a number"),
+    ("--law luding --params 1e5,1e5,0.05 --m1 0.01 --R1 0.005 --wall --v0 1", "k2_max"),
+    ("--law luding --params 1e5,5e5,0.05 --m1 0.01 --wall --v0 1", "--R1"),
     ("--law lsd --params 1e5,1 --m1 0.01 --wall --v0 1", "--params"),
     ("--law walton_braun --params 1e5,2e5 --kl 1e5 --m1 0.01 --wall --v0 1", "--kl"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --steps 0", "--steps"),

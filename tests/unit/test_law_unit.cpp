@@ -15,7 +15,7 @@
 namespace law = tdem::law;
 
 TEST(LawUnit, ListAndLookUps) {
-  EXPECT_EQ(law::normal_units::size, 3);
+  EXPECT_EQ(law::normal_units::size, 4);
   std::set<std::string> names;
   for (int k = 0; k < law::normal_units::size; ++k) {
     const law::Description* d = law::normal_units::descriptions[k];
@@ -125,4 +125,49 @@ TEST(LawUnit, AdviceNumbersOfEveryUnit) {
   check_unit<tdem::walton_braun::Law>({1e5, 1e5, 3.0}, meff, reff, v);
   check_unit<tdem::thornton::Law>({1e10, 3e7}, meff, reff, v);
   check_unit<tdem::power_law::Law>({1e7, 1.5, 5e9, 0.5}, meff, reff, v);
+  check_unit<tdem::luding::Law>({1e5, 5e5, 0.2}, meff, reff, v);   // xi_max below xi_lim
+  check_unit<tdem::luding::Law>({1e5, 5e5, 0.02}, meff, reff, v);  // beyond
+}
+
+// Luding's law (docs/adding_a_law.md): the closed forms re-derived here against the integrated
+// impact of its kernel, below and beyond the plastic limit, and the zero-force rule.
+TEST(LawUnit, LudingClosedForms) {
+  const double m = 0.01, r = 0.005, k1 = 1e5, k2m = 5e5;
+  for (double phi : {0.05, 0.01}) {
+    SCOPED_TRACE(phi);
+    const tdem::luding::Params<double> p{k1, k2m, phi};
+    const double xl = k2m / (k2m - k1) * phi * 2 * r, a = std::sqrt(m / k1);
+    double e, tc;
+    if (a < xl) {
+      const double k2 = k1 + (k2m - k1) * a / xl;
+      e = std::sqrt(k1 / k2);
+      tc = 0.5 * M_PI * (std::sqrt(m / k1) + std::sqrt(m / k2));
+    } else {  // rebound energy 1/2 k2m (xi_max - xi_0)^2 from the energy balance of loading
+      const double x0 = xl * (1 - k1 / k2m);
+      const double excess = 0.5 * m - 0.5 * k1 * xl * xl;  // kinetic energy left at xi_lim
+      const double d = (-k1 * xl + std::sqrt(k1 * k1 * xl * xl + 2 * k2m * excess)) / k2m;  // xi_max - xi_lim
+      e = std::sqrt(k2m * (xl + d - x0) * (xl + d - x0) / m);
+      tc = NAN;
+    }
+    EXPECT_NEAR(tdem::luding::restitution(p, m, r, 1.0), e, 1e-12);
+    tdem::collision::UnitLaw<tdem::luding::Law> l;
+    l.p = p;
+    tdem::collision::Bodies b;
+    b.m1 = m;
+    b.R1 = r;
+    const auto res = tdem::collision::integrate(l, b, 1.0);
+    EXPECT_NEAR(res.restitution, e, 1e-7);
+    EXPECT_NEAR(res.contact_time, tdem::luding::contact_time(p, m, r, 1.0), 1e-6 * res.contact_time);
+    if (!std::isnan(tc)) EXPECT_NEAR(res.contact_time, tc, 1e-12);
+  }
+  // unloading past zero force: no attraction, and xi_max moves so that the line passes through xi
+  const tdem::luding::Params<double> p{k1, k2m, 0.05};
+  double h[1] = {0.0};
+  tdem::luding::force(p, tdem::NormalKinematics<double>{2e-4, 1.0, m, r}, h, true);
+  EXPECT_EQ(h[0], 2e-4);
+  const auto z = tdem::luding::force(p, tdem::NormalKinematics<double>{1e-5, -1.0, m, r}, h, true);
+  EXPECT_EQ(z.force, 0.0);
+  const double xl = tdem::luding::limit_overlap(p, r);
+  const double k2 = k1 + (k2m - k1) * h[0] / xl;
+  EXPECT_NEAR(k2 * (1e-5 - h[0]) + k1 * h[0], 0.0, 1e-9 * k1 * 2e-4);  // the new line through xi
 }

@@ -14,7 +14,8 @@
 #define TDEM_LIGGGHTS_UNITS(X)           \
   X(TDEM_WALTON_BRAUN, 42, walton_braun) \
   X(TDEM_THORNTON, 43, thornton)         \
-  X(TDEM_POWER_LAW, 45, power_law)
+  X(TDEM_POWER_LAW, 45, power_law)       \
+  X(TDEM_LUDING, 48, luding)
 
 namespace LIGGGHTS {
 namespace ContactModels {

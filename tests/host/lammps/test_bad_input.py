@@ -43,7 +43,7 @@ CASES = [
     # name, body, expected substrings
     ("unknown normal law", pair("normal hooke 2000 50 tangential cundall_strack 600 25 0.5"),
      ["normal law 'hooke' is unknown",
-      "allowed: lsd, hertz, walton_braun, thornton, power_law, extended_linear, extended_hertz"]),
+      "allowed: lsd, hertz, walton_braun, thornton, power_law, luding, extended_linear, extended_hertz"]),
     # normal hertz
     ("hertz value count", pair("normal hertz 2e8 0.3 0.1 tangential cundall_strack 0.8 0.5"),
      ["normal hertz needs 2 values (E NU", "or 4 values", "got 3"]),
@@ -109,6 +109,17 @@ CASES = [
      ["normal power_law Q (extra unloading exponent) = -0.5 must be >= 0"]),
     ("power_law damping", pair("normal power_law 1e7 1.5 3e7 tangential cundall_strack 0.8 0.5 damping mass"),
      ["keyword 'damping mass' applies to 'normal lsd stiffness' only", "power_law has no damping"]),
+    # normal luding (the worked example of docs/adding_a_law.md): every message from its description
+    ("luding value count", pair("normal luding 1e5 5e5 tangential cundall_strack 0.8 0.5"),
+     ["normal luding needs 3 values (K1 K2MAX PHIF), got 2"]),
+    ("luding K2MAX below K1", pair("normal luding 1e5 5e4 0.05 tangential cundall_strack 0.8 0.5"),
+     ["normal luding K2MAX (largest unloading stiffness) = 50000 is outside the allowed range [K1, inf) = [100000, inf)"]),
+    ("luding K2MAX = K1", pair("normal luding 1e5 1e5 0.05 tangential cundall_strack 0.8 0.5"),
+     ["normal luding: largest unloading stiffness k2_max", "(k1, inf)"]),
+    ("luding PHIF = 0", pair("normal luding 1e5 5e5 0 tangential cundall_strack 0.8 0.5"),
+     ["normal luding PHIF (plasticity depth) = 0 must be > 0"]),
+    ("luding damping", pair("normal luding 1e5 5e5 0.05 tangential cundall_strack 0.8 0.5 damping mass"),
+     ["luding has no damping"]),
     # normal extended_linear
     ("ext_linear missing e_fit", pair("normal extended_linear tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
      ["normal extended_linear needs 'e_fit constant|rational|power C0 ..', got 'tc_fit'"]),
@@ -234,7 +245,7 @@ CASES = [
     ("rolling without values", pair(GOOD + " rolling sds"),
      ["rolling sds needs 3 values (KR GAMMAR MUR), got 0"]),
     ("missing law", pair(""),
-     ["expected 'normal lsd|hertz|walton_braun|thornton|power_law|extended_linear|extended_hertz ...' "
+     ["expected 'normal lsd|hertz|walton_braun|thornton|power_law|luding|extended_linear|extended_hertz ...' "
       "first, got 'end of line'"]),
     ("pair_style arguments", pair(GOOD, "pair_style tdem/gran 2000 50"),
      ["pair_style tdem/gran takes no arguments", "'2000'"]),

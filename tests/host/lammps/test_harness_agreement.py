@@ -90,7 +90,8 @@ CASES += [
      ["--law", "power_law", "--al", "1e7", "--p", "1.5", "--aul", "2.915e7"], 1.0),
     ("power_law q = 0.5", "normal power_law 1e7 1.5 3e9 0.5 %s" % TS,
      ["--law", "power_law", "--al", "1e7", "--p", "1.5", "--aul", "3e9", "--q", "0.5"], 1.0),
-], 1.0),
+    # luding (the worked example of docs/adding_a_law.md): below and beyond its plastic limit
+    ("luding below xi_lim", "normal luding 1e5 5e5 0.05 %s" % TS, ["--law", "luding", "--params", "1e5,5e5,0.05"], 1.0),
     ("luding beyond xi_lim", "normal luding 1e5 5e5 0.01 %s" % TS, ["--law", "luding", "--params", "1e5,5e5,0.01"], 1.0),
 ]
 EXT_A = ("e_fit rational 1 1 0.2 tc_fit power 1e-3 0.2",

@@ -312,6 +312,25 @@ def part_closed_forms():
             kmax = 1.5 * kt * math.sqrt(xi)
             ok = row is not None and close(row["k_max"], kmax, 1e-7)
             chk.check(ok, "stock %s: k_max %s vs %.9g (k~ = kn sqrt(R*))" % (style, row and row["k_max"], kmax))
+    # normal luding (docs/adding_a_law.md, a law added as a unit): its advice from the unit, against
+    # its closed forms re-typed here: xi_max = v sqrt(m*/k1) below xi_lim, k_max = k2(xi_max)
+    # = k1 + (k2max - k1) xi_max / xi_lim, dt_c = 2 / omega, t_c = pi/2 (sqrt(m*/k1) + sqrt(m*/k2))
+    atoms, vel, nt = two_spheres()
+    k1, k2m, phi, v = 1e4, 5e4, 0.1, 1.0
+    meff, reff = mass(R) / 2, R / 2
+    xl = k2m / (k2m - k1) * phi * 2 * reff
+    xm = v * math.sqrt(meff / k1)
+    k2 = k1 + (k2m - k1) * xm / xl
+    tc = 0.5 * math.pi * (math.sqrt(meff / k1) + math.sqrt(meff / k2))
+    inter = "pair_style tdem/gran\npair_coeff * * normal luding %r %r %r tangential cundall_strack 0.8 0.5" % (k1, k2m, phi)
+    _, out = lc.run(EXE, script(atoms, vel, nt, inter, 1e-6, "fix ts all tdem/timestep vmax %r" % v, body="run 0\n"),
+                    lc.workdir("ts_luding"))
+    row = table_rows(out).get("pair_1_1")
+    ok = row is not None and xm < xl and close(row["k_max"], k2, 1e-7) and \
+        close(row["dt_critical"], 2.0 * math.sqrt(meff / k2), 1e-7) and close(row["t_contact"], tc, 1e-7)
+    chk.check(ok, "luding pair: k_max %s/%.9g dt_c %s/%.9g t_c %s/%.9g"
+              % (row and row["k_max"], k2, row and row["dt_critical"], 2.0 * math.sqrt(meff / k2),
+                 row and row["t_contact"], tc))
     # the scheme: fix tdem/integrate gear5 (read from the fix) and the keyword `scheme`
     # w_c at zeta = 0.0709 (e = 0.8), docs/timestep.md: gear5 0.8545, ab4 0.4138 (4 digits)
     for integ, kw, name, wc in (("fix i all tdem/integrate scheme gear5", "", "gear5", 0.8545),

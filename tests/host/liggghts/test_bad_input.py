@@ -149,6 +149,14 @@ GOOD_WB = {
     "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
     "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
 }
+GOOD_LU = {
+    "loadingStiffness": "peratomtypepair 2 1e4 1e4 1e4 1e4",
+    "unloadingStiffnessMax": "peratomtypepair 2 5e4 5e4 5e4 5e4",
+    "plasticityDepth": "peratomtypepair 2 0.1 0.1 0.1 0.1",
+    "tangentialStiffnessRatio": "peratomtypepair 2 0.3 0.3 0.3 0.3",
+    "coefficientFriction": "peratomtypepair 2 0.5 0.5 0.5 0.5",
+}
+LU = "model tdem/luding tangential tdem/cundall_strack"
 GOOD_TH = {
     "youngsModulus": "peratomtype 5e6 5e6",
     "poissonsRatio": "peratomtype 0.3 0.3",
@@ -197,6 +205,16 @@ CASES += [
     ("tdem/walton_braun unloadingStiffness < loadingStiffness", WB,
      props(GOOD_WB, unloadingStiffness="peratomtypepair 2 2e4 5e3 5e3 2e4"), None,
      [r"model tdem/walton_braun", r"unloadingStiffness", r"5000", r"types 1 2", r">= loadingStiffness \(10000\)"]),
+    # tdem/luding (docs/adding_a_law.md): the messages of a law added as a unit
+    ("tdem/luding unloadingStiffnessMax < loadingStiffness", LU,
+     props(GOOD_LU, unloadingStiffnessMax="peratomtypepair 2 5e4 5e3 5e3 5e4"), None,
+     [r"model tdem/luding", r"unloadingStiffnessMax", r"5000", r"types 1 2", r">= loadingStiffness \(10000\)"]),
+    ("tdem/luding unloadingStiffnessMax = loadingStiffness", LU,
+     props(GOOD_LU, unloadingStiffnessMax="peratomtypepair 2 1e4 1e4 1e4 1e4"), None,
+     [r"model tdem/luding", r"atom types 1 1", r"k2_max"]),
+    ("tdem/luding plasticityDepth = 0", LU, props(GOOD_LU, plasticityDepth="peratomtypepair 2 0.1 0 0 0.1"), None,
+     [r"model tdem/luding", r"plasticityDepth", r"value 0 ", r"types 1 2", r"> 0"]),
+    ("tdem/luding missing plasticityDepth", LU, props(GOOD_LU, plasticityDepth=None), None, [r"plasticityDepth"]),
     ("tdem/walton_braun loadingStiffness = 0", WB,
      props(GOOD_WB, loadingStiffness="peratomtypepair 2 1e4 1e4 1e4 0"), None,
      [r"model tdem/walton_braun", r"loadingStiffness", r"value 0 ", r"types 2 2", r"> 0"]),

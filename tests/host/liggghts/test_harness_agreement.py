@@ -108,6 +108,12 @@ def groups():
         g.append(dict(name="continuous_potential_limitForce_" + limit, end=end,
                       model="model tdem/continuous_potential tangential tdem/cundall_strack limitForce " + limit,
                       sets=sets))
+    # luding (the worked example of docs/adding_a_law.md): below and beyond its plastic limit
+    g.append(dict(name="luding", end="zero_force", model="model tdem/luding tangential tdem/cundall_strack",
+                  sets=[mk("below", {"loadingStiffness": KL, "unloadingStiffnessMax": 5 * KL, "plasticityDepth": 0.1},
+                           ["--law", "luding", "--params", "%r,%r,0.1" % (KL, 5 * KL)]),
+                        mk("beyond", {"loadingStiffness": KL, "unloadingStiffnessMax": 5 * KL, "plasticityDepth": 0.02},
+                           ["--law", "luding", "--params", "%r,%r,0.02" % (KL, 5 * KL)])]))
     AL = 5.0e5
     g.append(dict(name="power_law", end="zero_force", model="model tdem/power_law tangential tdem/cundall_strack",
                   sets=[mk("q0", {"loadingCoefficient": AL, "loadingExponent": 1.5,
