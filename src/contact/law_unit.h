@@ -39,6 +39,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <new>
 #include <type_traits>
 
 #include "kinematics.h"
@@ -58,6 +59,14 @@ struct ParamStore {
   void set(const P& p) {
     static_assert(std::is_trivially_copyable<P>::value && sizeof(P) <= sizeof(v), "Params must fit ParamStore");
     std::memcpy(v, &p, sizeof(P));
+  }
+  // The stored parameters in place (no copy: a host's per-pair table is read as the kernel's
+  // Params on the contact path, as a struct member would be). P must be the type set() stored.
+  template <class P>
+  const P& as() const {
+    static_assert(std::is_standard_layout<P>::value && sizeof(P) <= sizeof(v) && alignof(P) <= alignof(double),
+                  "Params must fit ParamStore");
+    return *std::launder(reinterpret_cast<const P*>(v));
   }
   template <class P>
   P get() const {

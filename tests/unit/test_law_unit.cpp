@@ -158,7 +158,9 @@ TEST(LawUnit, LudingClosedForms) {
     const auto res = tdem::collision::integrate(l, b, 1.0);
     EXPECT_NEAR(res.restitution, e, 1e-7);
     EXPECT_NEAR(res.contact_time, tdem::luding::contact_time(p, m, r, 1.0), 1e-6 * res.contact_time);
-    if (!std::isnan(tc)) EXPECT_NEAR(res.contact_time, tc, 1e-12);
+    if (!std::isnan(tc)) {
+      EXPECT_NEAR(res.contact_time, tc, 1e-12);
+    }
   }
   // unloading past zero force: no attraction, and xi_max moves so that the line passes through xi
   const tdem::luding::Params<double> p{k1, k2m, 0.05};

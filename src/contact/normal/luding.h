@@ -145,11 +145,11 @@ struct Law {
     validate(p);
     return p;
   }
-  static NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
+  static TDEM_KERNEL NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
     return luding::force(p, kin, hist, update);
   }
   // k_t = KAPPA k1 (the loading stiffness, on every branch; LIGGGHTS's hooke/hysteresis: k_t = k_n)
-  static double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>&) {
+  static TDEM_KERNEL double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>&) {
     return p.k1;
   }
   // time-step advice: the unloading stiffness k2 reached at xi_max; closed-form contact time

@@ -170,11 +170,11 @@ struct Law {
     validate(p);
     return p;
   }
-  static NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
+  static TDEM_KERNEL NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
     return power_law::force(p, kin, hist, update);
   }
   // k_t = KAPPA dF/dxi of the branch in use
-  static double tangential_basis(const Params&, const NormalResult<double>& r, const NormalKinematics<double>&) {
+  static TDEM_KERNEL double tangential_basis(const Params&, const NormalResult<double>& r, const NormalKinematics<double>&) {
     return r.stiffness;
   }
   // time-step advice: the larger of the loading tangent p F_max / xi_max and the unloading tangent

@@ -208,12 +208,12 @@ struct Law {
     validate(p);
     return p;
   }
-  static NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
+  static TDEM_KERNEL NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
     return thornton::force(p, kin, hist, update);
   }
   // k_t = KAPPA 2 E* a with the contact radius a = sqrt(R* xi) (the Hertz tangent; it follows the
   // contact radius, not the plastic branch of the normal law)
-  static double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>& kin) {
+  static TDEM_KERNEL double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>& kin) {
     return 2.0 * p.e_star * std::sqrt(kin.reff * kin.overlap);
   }
   // time-step advice: the unloading tangent at xi_max, 2 E* sqrt(R* xi_max) (>= every loading

@@ -163,11 +163,11 @@ struct Law {
     validate(p);
     return p;
   }
-  static NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
+  static TDEM_KERNEL NormalResult<double> force(const Params& p, const NormalKinematics<double>& kin, double* hist, bool update) {
     return walton_braun::force(p, kin, hist, update);
   }
   // k_t = KAPPA k_l (the loading stiffness, on every branch)
-  static double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>&) {
+  static TDEM_KERNEL double tangential_basis(const Params& p, const NormalResult<double>&, const NormalKinematics<double>&) {
     return p.k_load;
   }
   // time-step advice: the unloading stiffness k_ul from xi_max; closed-form contact time

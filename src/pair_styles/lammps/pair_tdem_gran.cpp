@@ -202,7 +202,9 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   // loop invariants (the force and touch stores cannot alias them)
   const LawCoeffs law1 = lawtab[ntp1 + 1];
   // history values per neighbour: fixed on the compile-time paths, else size_history
-  const int hsize = M >= 0 ? tdem_lammps::history_size(M, TL > 0 ? TL : 0) : size_history;
+  // (a constant expression on those paths, so that the unused stores of clear_*_history vanish)
+  constexpr int hsize_m = M >= 0 ? tdem_lammps::history_size(M, TL > 0 ? TL : 0) : 0;
+  const int hsize = M >= 0 ? hsize_m : size_history;
 
   const int inum = list->inum;
   int *ilist = list->ilist;

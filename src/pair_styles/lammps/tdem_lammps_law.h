@@ -293,6 +293,25 @@ inline void rolling_torque(const LawCoeffs &c, int tlaw, double delx, double del
                             shear + history_size(c.mode, tlaw), troll);
 }
 
+// The normal force of a contact of unit U (src/contact/law_unit.h): its kernel on its history
+// slots h, the force over distance ccel, the tangent stiffness and damping for the tangential
+// law, and k_t = KAPPA * the unit's tangential basis for cundall_strack.
+template <class U>
+TDEM_KERNEL void unit_normal(const LawCoeffs &c, double meff, double overlap, double overlap_rate, double rinv,
+                             double radi, double radj, double *h, bool update, double &ccel, double &kn_used,
+                             double &gn_used, double &kt) {
+  tdem::NormalKinematics<double> kin;
+  kin.overlap = overlap;
+  kin.overlap_rate = overlap_rate;
+  kin.meff = meff;
+  kin.reff = U::needs_reff ? (radj > 0.0 ? radi * radj / (radi + radj) : radi) : 0.0;
+  const auto &p = c.up.as<typename U::Params>();
+  const auto res = U::force(p, kin, h, update);
+  ccel = res.force * rinv;
+  kn_used = res.stiffness, gn_used = res.damping;
+  kt = c.kappa * U::tangential_basis(p, res, kin);
+}
+
 template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK, int D = -1>
 inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, double dely,
                              double delz, double r, double rinv, double rsqinv, double overlap,
@@ -370,24 +389,16 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     tp.gammat = 0.0;
   } else if (is_unit(mode)) {
     // a unit (src/contact/law_unit.h): its kernel on its history slots after the tangential block
-    auto normal = [&](auto tag) {
-      using U = typename decltype(tag)::type;
-      tdem::NormalKinematics<double> kin;
-      kin.overlap = overlap;
-      kin.overlap_rate = -vnnr * rinv;
-      kin.meff = meff;
-      kin.reff = U::needs_reff ? (radj > 0.0 ? radi * radj / (radi + radj) : radi) : 0.0;
-      const auto p = c.up.get<typename U::Params>();
-      const auto res = U::force(p, kin, shear + toff, update);
-      ccel = res.force * rinv;
-      kn_used = res.stiffness, gn_used = res.damping;
-      tp.kt = c.kappa * U::tangential_basis(p, res, kin);
-      tp.gammat = 0.0;
-    };
-    if constexpr (M >= MODE_UNIT)
-      normal(tdem::law::Tag<UnitOf<M>>{});
-    else
-      tdem::law::visit<NormalUnits>(mode - MODE_UNIT, normal);
+    if constexpr (M >= MODE_UNIT) {
+      unit_normal<UnitOf<M>>(c, meff, overlap, -vnnr * rinv, rinv, radi, radj, shear + toff, update, ccel, kn_used,
+                             gn_used, tp.kt);
+    } else {
+      tdem::law::visit<NormalUnits>(mode - MODE_UNIT, [&](auto tag) {
+        unit_normal<typename decltype(tag)::type>(c, meff, overlap, -vnnr * rinv, rinv, radi, radj, shear + toff,
+                                                  update, ccel, kn_used, gn_used, tp.kt);
+      });
+    }
+    tp.gammat = 0.0;
   } else if (mode == MODE_EXT_LINEAR) {
     // k(v0), gamma(v0) fixed at first touch; v0, k, gamma in history slots 3..5
     tdem::NormalKinematics<double> kin;
