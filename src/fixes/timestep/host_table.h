@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -25,6 +26,8 @@
 #include <vector>
 
 #include "fixes/timestep/timestep.h"
+
+#include <mpi.h>
 
 namespace tdem {
 namespace advice {
@@ -276,6 +279,85 @@ inline Now recheck(std::vector<Row>& rows, double v_pair, double v_wall, const s
   return now;
 }
 
+// ---------------------------------------------------------------- set-up and run-time reports
+// What both engines' fixes print and decide; `fix` is "fix ID tdem/timestep" (messages start with
+// it), the hosts only print the log on rank 0 and pass warnings and stops to their error calls.
+
+// The impact velocity of the set-up advice: vmax, else 2 x the largest particle speed, else 1.
+struct SetupSpeed {
+  double v = 1.0;
+  std::string source;
+};
+inline SetupSpeed setup_speed(const Options& opt, double largest_speed) {
+  if (opt.vmax_given) return {opt.vmax, "vmax"};
+  const double v = 2.0 * largest_speed;
+  if (v > 0.0) return {v, "2 x the largest particle speed"};
+  return {1.0, "no vmax given and every particle at rest: 1 (velocity units)"};
+}
+
+struct SetupReport {
+  std::string log;                    // head line, table, one summary per advised row
+  std::vector<std::string> warnings;  // full messages (check warn, or stop with check warn)
+  std::string stop;                   // the error of check stop (empty: none)
+  std::string unstable;               // the first row whose check says stop ("what: message")
+  double vec[3] = {INFINITY, INFINITY, 0.0};  // dt_c, steps per contact, dt / dt_c at set-up
+};
+inline SetupReport setup_report(const std::vector<Row>& rows, const Options& opt, integrators::Scheme scheme,
+                                double dt, const SetupSpeed& v, const std::string& fix) {
+  SetupReport rep;
+  const Policy pol = policy_of(opt);
+  const std::string head = fix + ": scheme " + integrators::info(scheme).name + ", dt = " + num(dt) +
+                           ", v_max = " + num(v.v) + " (" + v.source + "), check " + to_string(opt.check) +
+                           ", every " + std::to_string(opt.every) + ", fraction " + num(opt.fraction);
+  rep.log = table(rows, head, pol);
+  for (const Row& r : rows)
+    if (r.advised) {
+      rep.log += "  " + r.what + ": " + summary(r.a) + "\n";
+      if (r.law.find("candidates") != std::string::npos) rep.log += "    (" + r.law + ")\n";
+      rep.vec[0] = std::min(rep.vec[0], r.a.dt_critical);
+      rep.vec[1] = std::min(rep.vec[1], r.a.steps_per_contact);
+    }
+  if (rows.empty()) rep.log += "  (no type pair or wall with a supported law in the group)\n";
+  rep.vec[2] = std::isfinite(rep.vec[0]) && rep.vec[0] > 0.0 ? dt / rep.vec[0] : 0.0;
+  if (opt.check == CheckMode::off) return rep;
+  for (const Row& r : rows) {
+    if (!r.advised) continue;
+    const Check c = check(r.a, dt, pol);
+    if (c.verdict == Verdict::stop && rep.unstable.empty()) rep.unstable = r.what + ": " + c.message;
+    if (c.verdict != Verdict::ok && !(c.verdict == Verdict::stop && opt.check == CheckMode::stop))
+      rep.warnings.push_back(fix + ": " + r.what + ": " + c.message);
+  }
+  if (!rep.unstable.empty() && opt.check == CheckMode::stop) rep.stop = fix + " (check stop): " + rep.unstable;
+  return rep;
+}
+
+// The run-time re-check (recheck) from the largest particle speed and the largest overlap per
+// type pair xi[a * (ntypes + 1) + b]; when: "run-time" (act on the verdict) or nullptr (values only).
+enum class Action { none, warn, stop };
+struct RuntimeReport {
+  double vec[3] = {INFINITY, INFINITY, 0.0};
+  Action action = Action::none;
+  std::string message;
+};
+inline RuntimeReport runtime_report(std::vector<Row>& rows, double speed, const std::vector<double>& xi, int ntypes,
+                                    integrators::Scheme scheme, double dt, const Options& opt, const char* when,
+                                    long long step, const std::string& fix) {
+  auto row_xi = [&](const Row& r) { return r.jtype ? xi[r.itype * (ntypes + 1) + r.jtype] : 0.0; };
+  const Now now = recheck(rows, 2.0 * speed, speed, row_xi, scheme, dt, policy_of(opt));
+  RuntimeReport rep;
+  rep.vec[0] = now.dt_critical;
+  rep.vec[1] = now.steps_per_contact;
+  rep.vec[2] = now.fraction;
+  if (!when || opt.check == CheckMode::off || now.verdict == Verdict::ok) return rep;
+  double xmax = 0.0;
+  for (double v : xi) xmax = std::max(xmax, v);
+  rep.message = fix + ": " + when + " check at step " + std::to_string(step) + " (largest particle speed " +
+                num(speed) + ", approach velocity bound " + num(2.0 * speed) + ", largest pair overlap " + num(xmax) +
+                "): " + now.message;
+  rep.action = now.verdict == Verdict::stop && opt.check == CheckMode::stop ? Action::stop : Action::warn;
+  return rep;
+}
+
 // ---------------------------------------------------------------- run-time scans (both engines)
 // The smallest mass, radius and density per atom type of the local atoms with all of `bits` set
 // in their mask (3 (ntypes + 1) entries: masses, radii, densities, each indexed by type; a type
@@ -327,6 +409,50 @@ void local_largest_overlaps(const List* list, double* const* x, const double* ra
       m = std::max(m, ov);
     }
   }
+}
+
+// The same over all ranks of `world`, for an engine's Atom (rmass, radius, type, mask, v, x, nlocal,
+// ntypes): the smallest mass, radius and density per type of the atoms with all of `bits` set, the
+// largest speed of the group, the largest overlap per type pair of a neighbour list's pairs.
+template <class AtomT>
+void type_minima(MPI_Comm world, const AtomT* atom, int bits, std::vector<double>& mmin, std::vector<double>& rmin,
+                 std::vector<double>& rhomin) {
+  const int nt = atom->ntypes;
+  const std::vector<double> loc =
+      local_type_minima(atom->rmass, atom->radius, atom->type, atom->mask, atom->nlocal, bits, nt);
+  std::vector<double> all(loc.size());
+  MPI_Allreduce(loc.data(), all.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MIN, world);
+  mmin.assign(all.begin(), all.begin() + nt + 1);
+  rmin.assign(all.begin() + nt + 1, all.begin() + 2 * (nt + 1));
+  rhomin.assign(all.begin() + 2 * (nt + 1), all.end());
+}
+template <class AtomT>
+double largest_speed(MPI_Comm world, const AtomT* atom, int groupbit) {
+  const double v2 = local_largest_speed2(atom->v, atom->mask, atom->nlocal, groupbit);
+  double all = 0.0;
+  MPI_Allreduce(&v2, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  return std::sqrt(all);
+}
+template <class AtomT, class List>
+std::vector<double> largest_overlaps(MPI_Comm world, const AtomT* atom, const List* list, int groupbit, int neighmask) {
+  std::vector<double> loc;
+  local_largest_overlaps(list, atom->x, atom->radius, atom->type, atom->mask, groupbit, atom->ntypes, neighmask, loc);
+  std::vector<double> xi(loc.size(), 0.0);
+  MPI_Allreduce(loc.data(), xi.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MAX, world);
+  return xi;
+}
+
+// The scheme the advice is for: `scheme`, else the one of the first fix tdem/integrate (class
+// Integrate, with scheme_in_use()), else velocity_verlet (nve/sphere).
+template <class Integrate, class ModifyT>
+integrators::Scheme scheme_in_use(const Options& opt, const ModifyT* modify) {
+  if (opt.scheme_given) return opt.scheme;
+  for (int i = 0; i < modify->nfix; i++) {
+    const auto* f = modify->fix[i];
+    if (std::strcmp(f->style, "tdem/integrate") != 0) continue;
+    if (const auto* fi = dynamic_cast<const Integrate*>(f)) return fi->scheme_in_use();
+  }
+  return integrators::Scheme::velocity_verlet;
 }
 
 }  // namespace host

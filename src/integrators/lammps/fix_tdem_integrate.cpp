@@ -2,6 +2,7 @@
 // tdem for LAMMPS: fix tdem/integrate (see fix_tdem_integrate.h and docs/lammps.md).
 
 #include "fix_tdem_integrate.h"
+#include "integrators/fix_args.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -31,8 +32,8 @@ std::string allowed_schemes()
 /* ---------------------------------------------------------------------- */
 
 FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), scheme(ti::Scheme::velocity_verlet), rotation(1), nhist_t(0), nhist_r(0),
-    stride(1), code(0), nmax_rows(0), store(nullptr), dt_hist(0.0), dt_prev(0.0), pending(1), restart_mismatch(0)
+    PerAtomRows(lmp, narg, arg), scheme(ti::Scheme::velocity_verlet), rotation(1), nhist_t(0), nhist_r(0),
+    stride(1), code(0), dt_hist(0.0), dt_prev(0.0), pending(1), restart_mismatch(0)
 {
   const std::string where = std::string("fix ") + id + " tdem/integrate";
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag ||
@@ -41,32 +42,23 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS *lmp, int narg, char **arg) :
                               "the current atom style '" + std::string(atom->atom_style) +
                               "' lacks them");
 
-  bool have_scheme = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "scheme") {
-      if (iarg + 1 >= narg)
-        error->all(FLERR, where + ": keyword scheme needs a value; allowed: " + allowed_schemes());
-      if (!ti::parse_scheme(arg[iarg + 1], scheme))
-        error->all(FLERR, where + ": scheme '" + std::string(arg[iarg + 1]) +
-                              "' is unknown; allowed: " + allowed_schemes());
-      have_scheme = true;
-      iarg += 2;
-    } else if (key == "rotation") {
-      if (iarg + 1 >= narg) error->all(FLERR, where + ": keyword rotation needs a value; allowed: yes, no");
-      const std::string val = arg[iarg + 1];
-      if (val == "yes") rotation = 1;
-      else if (val == "no") rotation = 0;
-      else error->all(FLERR, where + ": rotation '" + val + "' is unknown; allowed: yes, no");
-      iarg += 2;
-    } else {
-      error->all(FLERR, where + ": unexpected argument '" + key +
-                            "'; allowed: scheme NAME, rotation yes|no");
-    }
+  ti::FixArgs fa;
+  const ti::ArgProblem p = ti::parse_fix_args(narg, arg, 3, fa);
+  std::string what;
+  switch (p.kind) {
+    case ti::ArgProblem::none: break;
+    case ti::ArgProblem::scheme_needs_value: what = "keyword scheme needs a value; allowed: " + allowed_schemes(); break;
+    case ti::ArgProblem::scheme_unknown: what = "scheme '" + p.word + "' is unknown; allowed: " + allowed_schemes(); break;
+    case ti::ArgProblem::rotation_needs_value: what = "keyword rotation needs a value; allowed: yes, no"; break;
+    case ti::ArgProblem::rotation_unknown: what = "rotation '" + p.word + "' is unknown; allowed: yes, no"; break;
+    case ti::ArgProblem::unknown_keyword:
+      what = "unexpected argument '" + p.word + "'; allowed: scheme NAME, rotation yes|no";
+      break;
+    case ti::ArgProblem::scheme_missing: what = "missing keyword 'scheme NAME'; allowed NAME: " + allowed_schemes(); break;
   }
-  if (!have_scheme)
-    error->all(FLERR, where + ": missing keyword 'scheme NAME'; allowed NAME: " + allowed_schemes());
+  if (!what.empty()) error->all(FLERR, where + ": " + what);
+  scheme = fa.scheme;
+  rotation = fa.rotation ? 1 : 0;
 
   ti::dispatch(scheme, [&](auto tag) {
     constexpr ti::Scheme S = decltype(tag)::value;
@@ -99,6 +91,8 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS *lmp, int narg, char **arg) :
   size_peratom_cols = stride;
   peratom_freq = 1;
 
+  rows_init(stride, "tdem/integrate:rows");
+  restart_head_ = 1;  // the scheme code
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
@@ -108,7 +102,6 @@ FixTDEMIntegrate::~FixTDEMIntegrate()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(store);
 }
 
 int FixTDEMIntegrate::setmask()
@@ -122,14 +115,7 @@ int FixTDEMIntegrate::setmask()
 void FixTDEMIntegrate::init()
 {
   // extended particles only (the angular acceleration divides by r^2)
-  const double *radius = atom->radius;
-  const int *mask = atom->mask;
-  int bad = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((mask[i] & groupbit) && !(radius[i] > 0.0)) bad = 1;
-  int anybad = 0;
-  MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
-  if (anybad)
+  if (ti::any_point_particle(world, atom, groupbit))
     error->all(FLERR, std::string("fix ") + id +
                           " tdem/integrate: every atom of the group needs radius > 0 (extended particles)");
 }
@@ -139,7 +125,7 @@ void FixTDEMIntegrate::init()
 void FixTDEMIntegrate::clear_started()
 {
   for (int i = 0; i < atom->nlocal; i++)
-    if (store[i][0] != 0.0) store[i][0] = 2.0;
+    if (rows_[i][0] != 0.0) rows_[i][0] = 2.0;
   dt_prev = dt_hist;
   pending = 1;
 }
@@ -150,7 +136,7 @@ void FixTDEMIntegrate::clear_started()
 template <ti::Scheme S, bool R>
 void FixTDEMIntegrate::start_atom(int i, const double *a, const double *al, double h)
 {
-  double *s = store[i];
+  double *s = rows_[i];
   double *vi = atom->v[i];
   double *wi = atom->omega[i];
   if constexpr (S == ti::Scheme::leapfrog || S == ti::Scheme::position_verlet) {
@@ -173,7 +159,7 @@ void FixTDEMIntegrate::setup(int /*vflag*/)
   if (update->dt != dt_hist) {
     int nstarted = 0, all = 0;
     for (int i = 0; i < atom->nlocal; i++)
-      if (store[i][0] == 1.0 || store[i][0] == 3.0) nstarted++;
+      if (rows_[i][0] == 1.0 || rows_[i][0] == 3.0) nstarted++;
     MPI_Allreduce(&nstarted, &all, 1, MPI_INT, MPI_SUM, world);
     if (all > 0 && comm->me == 0)
       error->warning(FLERR, fmt::format("fix {} tdem/integrate: the time step changed from {} to {}; "
@@ -226,14 +212,14 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial()
         const double dtir = dtfrot / (radius[i] * radius[i] * rmass[i]);
         for (int k = 0; k < 3; k++) omega[i][k] += dtir * torque[i][k];
       }
-      store[i][0] = 1.0;
+      rows_[i][0] = 1.0;
     }
     return;
   }
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    double *s = store[i];
+    double *s = rows_[i];
     double acc[6];
     accelerations(i, acc);
     const double *a = acc, *al = acc + 3;
@@ -273,14 +259,14 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final()
         const double dtir = dtfrot / (radius[i] * radius[i] * rmass[i]);
         for (int k = 0; k < 3; k++) omega[i][k] += dtir * torque[i][k];
       }
-      store[i][0] = 1.0;
+      rows_[i][0] = 1.0;
     }
     return;
   }
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    double *s = store[i];
+    double *s = rows_[i];
     if (!KT::has_correct && s[0] == 1.0) continue;
     double acc[6];
     accelerations(i, acc);
@@ -318,9 +304,9 @@ void FixTDEMIntegrate::post_run()
   if (!nlast) return;
   const int *mask = atom->mask;
   for (int i = 0; i < atom->nlocal; i++)
-    if ((mask[i] & groupbit) && store[i][0] == 1.0) {
-      accelerations(i, store[i] + olast);
-      store[i][0] = 3.0;
+    if ((mask[i] & groupbit) && rows_[i][0] == 1.0) {
+      accelerations(i, rows_[i] + olast);
+      rows_[i][0] = 3.0;
     }
 }
 
@@ -349,54 +335,30 @@ void FixTDEMIntegrate::final_integrate()
 
 double FixTDEMIntegrate::memory_usage()
 {
-  return (double) nmax_rows * stride * sizeof(double);
+  return rows_memory();
 }
 
 /* ---------------------------------------------------------------------- per-atom arrays */
 
-void FixTDEMIntegrate::grow_arrays(int n)
-{
-  if (n <= nmax_rows) return;
-  memory->grow(store, n, stride, "tdem/integrate:store");
-  array_atom = store;
-  for (int i = nmax_rows; i < n; i++)
-    for (int m = 0; m < stride; m++) store[i][m] = 0.0;
-  nmax_rows = n;
-}
-
-void FixTDEMIntegrate::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int m = 0; m < stride; m++) store[j][m] = store[i][m];
-}
-
 void FixTDEMIntegrate::set_arrays(int i)
 {
   // a new atom (create_atoms, read_data, fix pour, deposit ...): started after its first force
-  for (int m = 0; m < stride; m++) store[i][m] = 0.0;
+  PerAtomRows::set_arrays(i);
   pending = 1;
-}
-
-int FixTDEMIntegrate::pack_exchange(int i, double *buf)
-{
-  for (int m = 0; m < stride; m++) buf[m] = store[i][m];
-  return stride;
 }
 
 int FixTDEMIntegrate::unpack_exchange(int nlocal, double *buf)
 {
-  for (int m = 0; m < stride; m++) store[nlocal][m] = buf[m];
   if (buf[0] == 0.0) pending = 1;
-  return stride;
+  return PerAtomRows::unpack_exchange(nlocal, buf);
 }
 
 // per-atom restart record: [count incl. itself, code, started, history ...]
 int FixTDEMIntegrate::pack_restart(int i, double *buf)
 {
-  int n = 0;
-  buf[n++] = stride + 2;
-  buf[n++] = code;
-  for (int m = 0; m < stride; m++) buf[n++] = store[i][m];
-  if (nlast && store[i][0] == 1.0) {  // written during a run: the force of this step is the last one
+  const double head = code;
+  const int n = pack_row(i, buf, &head);
+  if (nlast && rows_[i][0] == 1.0) {  // written during a run: the force of this step is the last one
     buf[2] = 3.0;
     accelerations(i, buf + 2 + olast);
   }
@@ -405,27 +367,9 @@ int FixTDEMIntegrate::pack_restart(int i, double *buf)
 
 void FixTDEMIntegrate::unpack_restart(int nlocal, int nth)
 {
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  const int count = static_cast<int>(extra[nlocal][m]);
-  const int stored_code = static_cast<int>(extra[nlocal][m + 1]);
-  if (restart_mismatch || count != stride + 2 || stored_code != code) {
-    for (int k = 0; k < stride; k++) store[nlocal][k] = 0.0;
-    pending = 1;
-    return;
-  }
-  for (int k = 0; k < stride; k++) store[nlocal][k] = extra[nlocal][m + 2 + k];
-}
-
-int FixTDEMIntegrate::maxsize_restart()
-{
-  return stride + 2;
-}
-
-int FixTDEMIntegrate::size_restart(int /*nlocal*/)
-{
-  return stride + 2;
+  const double head = code;
+  if (restart_mismatch) set_arrays(nlocal);
+  else if (!unpack_row(nlocal, nth, &head)) pending = 1;
 }
 
 // global restart record: scheme/rotation code, time step of the histories, doubles per atom,

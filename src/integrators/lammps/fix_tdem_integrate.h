@@ -31,12 +31,13 @@ FixStyle(tdem/integrate,FixTDEMIntegrate);
 #define TDEM_LMP_FIX_TDEM_INTEGRATE_H
 
 #include "fix.h"
+#include "pair_styles/per_atom_rows.h"
 
 #include "integrators/schemes.h"
 
 namespace LAMMPS_NS {
 
-class FixTDEMIntegrate : public Fix {
+class FixTDEMIntegrate : public tdem::host::PerAtomRows<Fix> {
  public:
   FixTDEMIntegrate(class LAMMPS *, int, char **);
   ~FixTDEMIntegrate() override;
@@ -49,15 +50,10 @@ class FixTDEMIntegrate : public Fix {
   void post_run() override;
   double memory_usage() override;
 
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
   int unpack_exchange(int, double *) override;
   int pack_restart(int, double *) override;
   void unpack_restart(int, int) override;
-  int size_restart(int) override;
-  int maxsize_restart() override;
   void write_restart(FILE *) override;
   void restart(char *) override;
 
@@ -74,8 +70,8 @@ class FixTDEMIntegrate : public Fix {
   int olast;             // offset of the last acceleration in a row: 1 + nhist_t + nhist_r
   int stride;            // olast + nlast
   int code;              // scheme and rotation, as stored in restart files
-  int nmax_rows;         // rows allocated in store
-  double **store;        // [atom][0] flag (0 new, 1 started, 2 re-start, 3 started + last acceleration
+  // rows_ (tdem::host::PerAtomRows, width_ = stride):
+                         // [atom][0] flag (0 new, 1 started, 2 re-start, 3 started + last acceleration
                          // kept for the next run), [1 ..] translation history, rotation history, last acceleration
   double dt_hist;        // the time step the histories were built with
   double dt_prev;        // the time step before the last change (re-start of half-step velocities)

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: fix tdem/integrate (see fix_tdem_integrate.h and docs/liggghts.md).
 #include "fix_tdem_integrate.h"
+#include "integrators/fix_args.h"
 #include "fixes/liggghts/style_maps.h"
 
 #include <mpi.h>
@@ -39,7 +40,7 @@ std::string fmt_double(double x) {
 /* ---------------------------------------------------------------------- */
 
 FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS* lmp, int narg, char** arg)
-    : Fix(lmp, narg, arg),
+    : PerAtomRows(lmp, narg, arg),
       scheme_(ti::Scheme::velocity_verlet),
       rotation_(true),
       nhist_t_(0),
@@ -50,8 +51,6 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS* lmp, int narg, char** arg)
       off_hr_(1),
       stride_(1),
       code_(0),
-      nmax_(0),
-      row_(nullptr),
       dt_hist_(0.0),
       restart_mismatch_(false) {
   const std::string where = std::string("fix ") + id + " tdem/integrate";
@@ -63,42 +62,34 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS* lmp, int narg, char** arg)
                                                     : !atom->omega_flag ? "omega" : "torque"))
                           .c_str());
 
-  bool have_scheme = false;
-  int iarg = 3;
-  while (iarg < narg) {
-    const std::string key = arg[iarg];
-    if (key == "scheme") {
-      if (iarg + 1 >= narg)
-        error->all(FLERR, (where + ": keyword 'scheme' needs a value; allowed values: " + allowed_schemes())
-                              .c_str());
-      if (!ti::parse_scheme(arg[iarg + 1], scheme_))
-        error->all(FLERR, (where + ": keyword 'scheme' has unknown value '" + std::string(arg[iarg + 1]) +
-                           "'; allowed values: " + allowed_schemes())
-                              .c_str());
-      have_scheme = true;
-      iarg += 2;
-    } else if (key == "rotation") {
-      if (iarg + 1 >= narg)
-        error->all(FLERR, (where + ": keyword 'rotation' needs a value; allowed values: yes | no").c_str());
-      const std::string val = arg[iarg + 1];
-      if (val == "yes")
-        rotation_ = true;
-      else if (val == "no")
-        rotation_ = false;
-      else
-        error->all(FLERR, (where + ": keyword 'rotation' has unknown value '" + val +
-                           "'; allowed values: yes | no")
-                              .c_str());
-      iarg += 2;
-    } else {
-      error->all(FLERR, (where + ": unknown keyword '" + key + "'; allowed keywords: scheme NAME, rotation yes|no")
-                            .c_str());
-    }
+  ti::FixArgs fa;
+  const ti::ArgProblem p = ti::parse_fix_args(narg, arg, 3, fa);
+  std::string what;
+  switch (p.kind) {
+    case ti::ArgProblem::none: break;
+    case ti::ArgProblem::scheme_needs_value:
+      what = "keyword 'scheme' needs a value; allowed values: " + allowed_schemes();
+      break;
+    case ti::ArgProblem::scheme_unknown:
+      what = "keyword 'scheme' has unknown value '" + p.word + "'; allowed values: " + allowed_schemes();
+      break;
+    case ti::ArgProblem::rotation_needs_value:
+      what = "keyword 'rotation' needs a value; allowed values: yes | no";
+      break;
+    case ti::ArgProblem::rotation_unknown:
+      what = "keyword 'rotation' has unknown value '" + p.word + "'; allowed values: yes | no";
+      break;
+    case ti::ArgProblem::unknown_keyword:
+      what = "unknown keyword '" + p.word + "'; allowed keywords: scheme NAME, rotation yes|no";
+      break;
+    case ti::ArgProblem::scheme_missing:
+      what = "keyword 'scheme' is missing (fix ID group tdem/integrate scheme NAME [rotation yes|no]); allowed "
+             "values of scheme: " + allowed_schemes();
+      break;
   }
-  if (!have_scheme)
-    error->all(FLERR, (where + ": keyword 'scheme' is missing (fix ID group tdem/integrate scheme NAME "
-                               "[rotation yes|no]); allowed values of scheme: " + allowed_schemes())
-                          .c_str());
+  if (!what.empty()) error->all(FLERR, (where + ": " + what).c_str());
+  scheme_ = fa.scheme;
+  rotation_ = fa.rotation;
 
   ti::dispatch(scheme_, [&](auto tag) {
     constexpr ti::Scheme S = decltype(tag)::value;
@@ -137,6 +128,8 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS* lmp, int narg, char** arg)
     if (logfile) std::fputs(line, logfile);
   }
 
+  rows_init(stride_, "tdem/integrate:row");
+  restart_head_ = 1;  // the scheme code
   grow_arrays(atom->nmax);
   atom->add_callback(0);
   atom->add_callback(1);
@@ -145,7 +138,6 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS* lmp, int narg, char** arg)
 FixTDEMIntegrate::~FixTDEMIntegrate() {
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
-  memory->destroy(row_);
 }
 
 int FixTDEMIntegrate::setmask() {
@@ -159,14 +151,7 @@ double FixTDEMIntegrate::inertia_factor() const { return domain->dimension == 2 
 
 void FixTDEMIntegrate::init() {
   // finite-size spheres only (the angular acceleration divides by r^2), as fix nve/sphere
-  const double* radius = atom->radius;
-  const int* mask = atom->mask;
-  int bad = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    if ((mask[i] & groupbit) && !(radius[i] > 0.0)) bad = 1;
-  int anybad = 0;
-  MPI_Allreduce(&bad, &anybad, 1, MPI_INT, MPI_MAX, world);
-  if (anybad)
+  if (ti::any_point_particle(world, atom, groupbit))
     error->all(FLERR, (std::string("fix ") + id +
                        " tdem/integrate: every atom of the group needs radius > 0 (extended particles)")
                           .c_str());
@@ -175,13 +160,13 @@ void FixTDEMIntegrate::init() {
 void FixTDEMIntegrate::restart_all(const char* why) {
   int started = 0, all = 0;
   for (int i = 0; i < atom->nlocal; i++)
-    if (row_[i][0] != 0.0) started++;
+    if (rows_[i][0] != 0.0) started++;
   MPI_Allreduce(&started, &all, 1, MPI_INT, MPI_SUM, world);
   if (all > 0 && comm->me == 0)
     error->warning(FLERR, (std::string("fix ") + id + " tdem/integrate: " + why +
                            "; the integration history of every atom is started again")
                               .c_str());
-  for (int i = 0; i < atom->nlocal; i++) row_[i][0] = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) rows_[i][0] = 0.0;
 }
 
 // A new run continues the histories, unless the time step changed since they were built.
@@ -223,7 +208,7 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial() {
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    double* s = row_[i];
+    double* s = rows_[i];
     // the stored acceleration of the last force evaluation (see the header)
     double* at = s + oat;
     double* ar = R ? s + oar : nullptr;
@@ -256,7 +241,7 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final() {
 
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    double* s = row_[i];
+    double* s = rows_[i];
     if (s[0] == 0.0) continue;  // appeared during this step: started at the next initial_integrate
     // velocity_verlet takes the present force at the next step (as nve/sphere): nothing to keep
     double tmp[6];
@@ -290,62 +275,20 @@ void FixTDEMIntegrate::final_integrate() {
   });
 }
 
-double FixTDEMIntegrate::memory_usage() { return static_cast<double>(nmax_) * stride_ * sizeof(double); }
+double FixTDEMIntegrate::memory_usage() { return rows_memory(); }
 
 /* ---------------------------------------------------------------------- per-atom rows */
 
-void FixTDEMIntegrate::grow_arrays(int n) {
-  if (n <= nmax_) return;
-  memory->grow(row_, n, stride_, "tdem/integrate:row");
-  for (int i = nmax_; i < n; i++)
-    for (int m = 0; m < stride_; m++) row_[i][m] = 0.0;
-  nmax_ = n;
-}
-
-void FixTDEMIntegrate::copy_arrays(int i, int j, int) {
-  for (int m = 0; m < stride_; m++) row_[j][m] = row_[i][m];
-}
-
-// a new atom (create_atoms, fix insert/*, ...): started after its first force
-void FixTDEMIntegrate::set_arrays(int i) {
-  for (int m = 0; m < stride_; m++) row_[i][m] = 0.0;
-}
-
-int FixTDEMIntegrate::pack_exchange(int i, double* buf) {
-  for (int m = 0; m < stride_; m++) buf[m] = row_[i][m];
-  return stride_;
-}
-
-int FixTDEMIntegrate::unpack_exchange(int nlocal, double* buf) {
-  for (int m = 0; m < stride_; m++) row_[nlocal][m] = buf[m];
-  return stride_;
-}
-
-// per-atom restart record: [number of values incl. this one, scheme code, row ...]
 int FixTDEMIntegrate::pack_restart(int i, double* buf) {
-  int n = 0;
-  buf[n++] = stride_ + 2;
-  buf[n++] = code_;
-  for (int m = 0; m < stride_; m++) buf[n++] = row_[i][m];
-  return n;
+  const double head = code_;
+  return pack_row(i, buf, &head);
 }
 
 void FixTDEMIntegrate::unpack_restart(int nlocal, int nth) {
-  double** extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  const int count = static_cast<int>(extra[nlocal][m]);
-  const int stored_code = static_cast<int>(extra[nlocal][m + 1]);
-  if (restart_mismatch_ || count != stride_ + 2 || stored_code != code_) {
-    for (int k = 0; k < stride_; k++) row_[nlocal][k] = 0.0;
-    return;
-  }
-  for (int k = 0; k < stride_; k++) row_[nlocal][k] = extra[nlocal][m + 2 + k];
+  const double head = code_;
+  if (restart_mismatch_) set_arrays(nlocal);
+  else unpack_row(nlocal, nth, &head);
 }
-
-int FixTDEMIntegrate::maxsize_restart() { return stride_ + 2; }
-
-int FixTDEMIntegrate::size_restart(int) { return stride_ + 2; }
 
 // global restart record: scheme code, time step of the histories, doubles per atom
 void FixTDEMIntegrate::write_restart(FILE* fp) {

@@ -36,12 +36,13 @@
 #include <cstdio>
 
 #include "fix.h"
+#include "pair_styles/per_atom_rows.h"
 
 #include "integrators/schemes.h"
 
 namespace LAMMPS_NS {
 
-class FixTDEMIntegrate : public Fix {
+class FixTDEMIntegrate : public tdem::host::PerAtomRows<Fix> {
  public:
   FixTDEMIntegrate(class LAMMPS*, int, char**);
   ~FixTDEMIntegrate();
@@ -55,15 +56,8 @@ class FixTDEMIntegrate : public Fix {
   void reset_dt();
   double memory_usage();
 
-  void grow_arrays(int);
-  void copy_arrays(int, int, int);
-  void set_arrays(int);
-  int pack_exchange(int, double*);
-  int unpack_exchange(int, double*);
   int pack_restart(int, double*);
   void unpack_restart(int, int);
-  int size_restart(int);
-  int maxsize_restart();
   void write_restart(FILE*);
   void restart(char*);
 
@@ -78,8 +72,7 @@ class FixTDEMIntegrate : public Fix {
   int off_ht_, off_hr_;    // offsets of the histories
   int stride_;             // doubles per atom
   int code_;               // scheme and rotation, as written to restart files
-  int nmax_;               // rows allocated
-  double** row_;           // per-atom rows
+  // rows_: the per-atom rows (tdem::host::PerAtomRows, width_ = stride_)
   double dt_hist_;         // time step the histories were built with
   bool restart_mismatch_;  // restart file of another scheme: every atom starts again
 

@@ -38,7 +38,7 @@ double wall_number(LAMMPS *lmp, const std::string &where, const std::string &key
 /* ---------------------------------------------------------------------- */
 
 FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), history_one(nullptr), fix_rigid(nullptr), mass_rigid(nullptr), fix_clump(nullptr),
+    PerAtomRows(lmp, narg, arg), fix_rigid(nullptr), mass_rigid(nullptr), fix_clump(nullptr),
     corr_mode(0)
 {
   const std::string where = std::string("fix ") + id + " tdem/wall/gran";
@@ -47,13 +47,12 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
 
   create_attribute = 1;
   restart_peratom = 1;
-  size_history = tdem::cundall_strack::history_size;
   nlevels_respa = 0;
   dt = update->dt;
 
   int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
   // the tangential block + the normal law's slots (+ the rolling displacement)
-  size_history = tdem_lammps::law_history_size(law, law.tlaw);
+  rows_init(tdem_lammps::law_history_size(law, law.tlaw), "tdem/wall/gran:history");
 
   // wall geometry
   if (iarg >= narg)
@@ -143,8 +142,6 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
   nmax = 0;
-  for (int i = 0; i < atom->nlocal; i++)
-    for (int m = 0; m < size_history; m++) history_one[i][m] = 0.0;
 
   time_origin = update->ntimestep;
 }
@@ -153,7 +150,6 @@ FixTDEMWallGran::~FixTDEMWallGran()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(history_one);
   memory->destroy(mass_rigid);
 }
 
@@ -327,14 +323,14 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
 
     const double rsq = dx * dx + dy * dy + dz * dz;
     const double rad = radius[i];
-    double *shear = history_one[i];
+    double *shear = rows_[i];
     if (rsq > rad * rad) {
       if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
-        tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, size_history);
+        tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, width_);
         continue;
       }
       shear[0] = shear[1] = shear[2] = 0.0;
-      tdem_lammps::clear_law_history(shear, size_history);
+      tdem_lammps::clear_law_history(shear, width_);
       continue;
     }
     // a centre on the wall surface has no normal: stop with the atom ID instead of NaN forces
@@ -412,62 +408,7 @@ void FixTDEMWallGran::post_force_respa(int vflag, int ilevel, int /*iloop*/)
 
 double FixTDEMWallGran::memory_usage()
 {
-  return (double) atom->nmax * size_history * sizeof(double) + (double) nmax * sizeof(double);
-}
-
-void FixTDEMWallGran::grow_arrays(int n)
-{
-  memory->grow(history_one, n, size_history, "tdem/wall/gran:history_one");
-}
-
-void FixTDEMWallGran::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int m = 0; m < size_history; m++) history_one[j][m] = history_one[i][m];
-}
-
-void FixTDEMWallGran::set_arrays(int i)
-{
-  for (int m = 0; m < size_history; m++) history_one[i][m] = 0.0;
-}
-
-int FixTDEMWallGran::pack_exchange(int i, double *buf)
-{
-  for (int m = 0; m < size_history; m++) buf[m] = history_one[i][m];
-  return size_history;
-}
-
-int FixTDEMWallGran::unpack_exchange(int nlocal, double *buf)
-{
-  for (int m = 0; m < size_history; m++) history_one[nlocal][m] = buf[m];
-  return size_history;
-}
-
-int FixTDEMWallGran::pack_restart(int i, double *buf)
-{
-  // buf[0] = number of values including itself, as every per-atom restart fix
-  int n = 0;
-  buf[n++] = size_history + 1;
-  for (int m = 0; m < size_history; m++) buf[n++] = history_one[i][m];
-  return n;
-}
-
-void FixTDEMWallGran::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  m++;
-  for (int k = 0; k < size_history; k++) history_one[nlocal][k] = extra[nlocal][m++];
-}
-
-int FixTDEMWallGran::maxsize_restart()
-{
-  return 1 + size_history;
-}
-
-int FixTDEMWallGran::size_restart(int /*nlocal*/)
-{
-  return 1 + size_history;
+  return rows_memory() + (double) nmax * sizeof(double);
 }
 
 void FixTDEMWallGran::reset_dt()

@@ -23,13 +23,15 @@ FixStyle(tdem/wall/gran,FixTDEMWallGran);
 #define TDEM_LMP_FIX_TDEM_WALL_GRAN_H
 
 #include "fix.h"
+#include "pair_styles/per_atom_rows.h"
 #include "tdem_lammps_law.h"
 
 #include "clump_correction_host.h"
 
 namespace LAMMPS_NS {
 
-class FixTDEMWallGran : public Fix {
+// per-atom contact history: tdem::host::PerAtomRows (rows_, width_ values per atom)
+class FixTDEMWallGran : public tdem::host::PerAtomRows<Fix> {
  public:
   FixTDEMWallGran(class LAMMPS *, int, char **);
   ~FixTDEMWallGran() override;
@@ -39,15 +41,6 @@ class FixTDEMWallGran : public Fix {
   void post_force(int) override;
   void post_force_respa(int, int, int) override;
   double memory_usage() override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override;
-  int maxsize_restart() override;
   void reset_dt() override;
 
   // C = 1: the multiple-contact correction of fix tdem/clump (C = 0: the plain loop)
@@ -67,8 +60,6 @@ class FixTDEMWallGran : public Fix {
   bigint time_origin;
   double dt;
   int nlevels_respa;
-  int size_history;
-  double **history_one;
 
   class Fix *fix_rigid;
   double *mass_rigid;

@@ -3,8 +3,7 @@
 
 #include "fix_tdem_clump.h"
 
-#include "fixes/clumps/clump_args.h"
-#include "fixes/clumps/host_bodies.h"
+#include "fixes/clumps/clump_host.h"
 
 #include "atom.h"
 #include "atom_vec.h"
@@ -24,19 +23,16 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <map>
 #include <mpi.h>
 #include <string>
 
 using namespace LAMMPS_NS;
 using namespace FixConst;
 namespace cl = tdem::clumps;
-using cl::Mat3;
 using cl::Vec3;
 
 namespace {
 constexpr double kRestartMagic = 20261129.0;
-constexpr int kBodyDoubles = 14;  // mol, x3, v3, q4, L3
 
 // Modify calls post_constructor() before restart(): whether the restart file read holds a global
 // record of this fix is looked up in Modify's list (protected members reached through pointers
@@ -57,13 +53,10 @@ struct ModifyRestartPeek : public Modify {
 /* ---------------------------------------------------------------------- */
 
 FixTDEMClump::FixTDEMClump(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), scheme(cl::Rotation::splitting), nsph(0), bodies_molecule(0),
-    correction((int) cl::Correction::none), restarted(0),
-    formed(0), ninsert(0), insert_type(1), insert_seed(0), nmax_idx(0), bodyidx(nullptr), sphidx(nullptr),
-    dtv(0.0), dtf(0.0)
+    Fix(lmp, narg, arg), bodies(std::string("fix ") + arg[0] + " tdem/clump"),
+    correction((int) cl::Correction::none), restarted(0), formed(0), dtv(0.0), dtf(0.0)
 {
   where = std::string("fix ") + id + " tdem/clump";
-  insert_vel[0] = insert_vel[1] = insert_vel[2] = 0.0;
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, where + " requires atom_style sphere (per-atom radius, rmass, omega, torque); the current "
                               "atom style '" + std::string(atom->atom_style) + "' lacks them");
@@ -74,58 +67,29 @@ FixTDEMClump::FixTDEMClump(LAMMPS *lmp, int narg, char **arg) :
   if (domain->dimension != 3) error->all(FLERR, where + " needs a 3d simulation (dimension is 2)");
   parse(narg, arg);
 
+  cl::declare_clump_fix(this);
   rigid_flag = 1;
-  time_integrate = 1;
-  restart_global = 1;
   dynamic_group_allow = 0;
-  scalar_flag = 1;
-  extscalar = 1;
-  vector_flag = 1;
-  size_vector = 9;
-  extvector = 1;
-  array_flag = 1;
-  size_array_cols = 17;
-  size_array_rows = 0;
   size_array_rows_variable = 1;
-  extarray = 0;
-  global_freq = 1;
   thermo_energy = 0;
 }
 
-FixTDEMClump::~FixTDEMClump()
-{
-  memory->destroy(bodyidx);
-  memory->destroy(sphidx);
-}
+FixTDEMClump::~FixTDEMClump() = default;
 
 /* ---------------------------------------------------------------------- */
 
 void FixTDEMClump::parse(int narg, char **arg)
 {
   // the arguments and the template: one parser for both engines (fixes/clumps/clump_args.h)
-  cl::ClumpArgs a;
   try {
-    a = cl::parse_clump_args(std::vector<std::string>(arg + 3, arg + narg), where, atom->ntypes);
-    tmpl = cl::clump_template(a, where);
+    args = cl::parse_clump_args(std::vector<std::string>(arg + 3, arg + narg), where, atom->ntypes);
+    bodies.configure(cl::clump_template(args, where), args.scheme);
   } catch (const std::exception &e) {
     error->all(FLERR, e.what());
   }
-  scheme = a.scheme;
-  ninsert = a.ninsert;
-  insert_type = a.insert_type;
-  insert_region = a.insert_region;
-  insert_seed = a.insert_seed;
-  for (int k = 0; k < 3; k++) insert_vel[k] = a.insert_vel[k];
-  bodies_molecule = a.bodies_molecule ? 1 : 0;
-  correction = (int) a.correction;
-  bprop = cl::Body::from(tmpl);
-  nsph = (int) tmpl.body.size();
-  sphere_mass = cl::sphere_masses(tmpl);  // the body mass shared by r^3; exactly M for one sphere
-  if (comm->me == 0)
-    utils::logmesg(lmp, fmt::format("{}: template {} ({} spheres): mass {:.10g}, principal inertia {:.10g} {:.10g} "
-                                    "{:.10g}, bounding radius {:.6g}, rotation {}\n",
-                                    where, tmpl.name, nsph, tmpl.mp.mass, tmpl.mp.principal[0], tmpl.mp.principal[1],
-                                    tmpl.mp.principal[2], tmpl.bounding_radius, cl::to_string(scheme)));
+  correction = (int) args.correction;
+  bodies.keep_local_mass(args.correction == cl::Correction::local_mass);
+  if (comm->me == 0) utils::logmesg(lmp, bodies.template_message(args.correction));
 }
 
 int FixTDEMClump::setmask()
@@ -137,19 +101,93 @@ int FixTDEMClump::setmask()
   return mask;
 }
 
-void FixTDEMClump::unwrapped(int i, double *xu) const
-{
-  domain->unmap(atom->x[i], atom->image[i], xu);
-}
-
 // N clumps at random positions and orientations in the region, without overlap with each other
 // and with existing atoms. Every rank draws the same sequence; each creates the spheres it owns.
 void FixTDEMClump::post_constructor()
 {
   if (ModifyRestartPeek::has_global(modify, id, "tdem/clump")) restarted = 1;
-  if (ninsert > 0 && !restarted) insert_clumps();
-  else if (ninsert > 0 && comm->me == 0)
+  if (args.ninsert > 0 && !restarted) insert_clumps();
+  else if (args.ninsert > 0 && comm->me == 0)
     utils::logmesg(lmp, where + ": bodies read from the restart file, 'insert' is skipped\n");
+}
+
+void FixTDEMClump::insert_clumps()
+{
+  const std::string &rname = args.insert_region;
+  Region *region = tdem_lammps::compat::region_by_id(domain, rname);
+  if (!region) error->all(FLERR, where + ": insert region '" + rname + "' does not exist (keyword 'insert')");
+  if (!region->bboxflag)
+    error->all(FLERR, where + ": insert region '" + rname + "' has no bounding box (use a bounded region)");
+  region->prematch();
+  // the placement of the core (body_set.h, host_bodies.h): the same seed gives the same clumps in
+  // both engines
+  const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
+  const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
+  std::vector<cl::NewSphere> spheres;
+  try {
+    spheres = cl::insert_clumps(
+        bodies, args, world, atom, lo, hi, [&](double x, double y, double z) { return region->match(x, y, z) != 0; },
+        [&](double *d) { tdem_lammps::compat::minimum_image(domain, d[0], d[1], d[2]); },
+        Vec3{domain->xperiodic ? domain->xprd : 0.0, domain->yperiodic ? domain->yprd : 0.0,
+             domain->zperiodic ? domain->zprd : 0.0});
+  } catch (const std::exception &e) {
+    error->all(FLERR, e.what());
+  }
+  size_array_rows = (int) bodies.size();
+
+  // create the spheres this rank owns (the upper end of a non-periodic box belongs to its rank)
+  const int nprev = atom->nlocal;
+  bool top[3];
+  for (int d = 0; d < 3; d++) top[d] = domain->subhi[d] == domain->boxhi[d] && !domain->periodicity[d];
+  bigint mycreated = 0;
+  for (const cl::NewSphere &s : spheres) {
+    double xw[3] = {s.x[0], s.x[1], s.x[2]};
+    imageint img = ((imageint) IMGMAX << IMG2BITS) | ((imageint) IMGMAX << IMGBITS) | IMGMAX;
+    domain->remap(xw, img);
+    if (!cl::owns_point(xw, domain->sublo, domain->subhi, top)) continue;
+    atom->avec->create_atom(args.insert_type, xw);
+    const int n = atom->nlocal - 1;
+    atom->tag[n] = (tagint) s.tag;
+    atom->molecule[n] = (tagint) s.mol;
+    atom->image[n] = img;
+    atom->mask[n] |= groupbit;
+    atom->radius[n] = bodies.tmpl().body[s.sphere].r;
+    atom->rmass[n] = bodies.sphere_mass()[s.sphere];
+    for (int d = 0; d < 3; d++) {
+      atom->v[n][d] = s.v[d];
+      atom->omega[n][d] = 0.0;
+    }
+    mycreated++;
+  }
+  bigint created = 0;
+  MPI_Allreduce(&mycreated, &created, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+  if (created != (bigint) spheres.size())
+    error->all(FLERR, fmt::format("{}: insert: {} spheres created instead of {} (a sphere outside every "
+                                  "subdomain: is region {} inside the box?)",
+                                  where, created, spheres.size(), rname));
+  atom->natoms += created;
+  atom->data_fix_compute_variable(nprev, atom->nlocal);
+  if (atom->map_style != Atom::MAP_NONE) {
+    atom->map_init();
+    atom->map_set();
+  }
+  if (comm->me == 0) utils::logmesg(lmp, bodies.inserted_message(args.ninsert, created, rname));
+}
+
+// Bodies from the group's molecules that are not bodies yet (tag order = template order).
+void FixTDEMClump::form_bodies()
+{
+  const auto unmap = [&](int i, double *xu) { domain->unmap(atom->x[i], atom->image[i], xu); };
+  try {
+    const int nnew = bodies.form(cl::allgather_rows(world, cl::form_rows(bodies, atom->nlocal, atom->mask, groupbit,
+                                                                          atom->tag, atom->molecule, unmap, atom->v,
+                                                                          atom->omega, atom->radius)),
+                                 group->names[igroup]);
+    if (comm->me == 0) utils::logmesg(lmp, bodies.formed_message(nnew, group->names[igroup]));
+  } catch (const std::exception &e) {
+    error->all(FLERR, e.what());
+  }
+  size_array_rows = (int) bodies.size();
 }
 
 /* ---------------------------------------------------------------------- */
@@ -163,7 +201,7 @@ void FixTDEMClump::init()
   for (int k = 0; k < neighbor->nex_mol; k++)
     if (neighbor->ex_mol_intra[k] && (neighbor->ex_mol_group[k] == igroup || neighbor->ex_mol_group[k] == 0))
       excluded = true;
-  if (!excluded && nsph > 1 && comm->me == 0)
+  if (!excluded && bodies.nsph() > 1 && comm->me == 0)
     error->warning(FLERR, where + ": spheres of one clump interact with each other; add 'neigh_modify exclude "
                               "molecule/intra " + std::string(group->names[igroup]) + "'");
   // another time integrator on the same atoms would move them twice
@@ -173,8 +211,8 @@ void FixTDEMClump::init()
     int mine = 0, any = 0;
     for (int j = 0; j < atom->nlocal; j++)
       if ((atom->mask[j] & f->groupbit) &&
-          (slot.count(atom->tag[j]) ||
-           (bodies_molecule && !formed && (atom->mask[j] & groupbit) && atom->molecule[j] > 0)))
+          (bodies.has_tag(atom->tag[j]) ||
+           (args.bodies_molecule && !formed && (atom->mask[j] & groupbit) && atom->molecule[j] > 0)))
         mine = 1;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     if (any)
@@ -186,65 +224,23 @@ void FixTDEMClump::init()
 // Per-atom body and sphere index of owned and ghost atoms; sphere radius and mass from the template.
 void FixTDEMClump::map_atoms()
 {
-  const int nall = atom->nlocal + atom->nghost;
-  if (atom->nmax > nmax_idx) {
-    nmax_idx = atom->nmax;
-    memory->destroy(bodyidx);
-    memory->destroy(sphidx);
-    memory->create(bodyidx, nmax_idx, "tdem/clump:bodyidx");
-    memory->create(sphidx, nmax_idx, "tdem/clump:sphidx");
-  }
-  const int nmine = tdem::clumps::map_clump_atoms(nall, atom->nlocal, atom->tag, slot, nsph, tmpl, sphere_mass,
-                                                  bodyidx, sphidx, atom->radius, atom->rmass);
-  bigint mine = nmine, all = 0;
-  MPI_Allreduce(&mine, &all, 1, MPI_LMP_BIGINT, MPI_SUM, world);
-  if (all != (bigint) st.size() * nsph)
-    error->all(FLERR, fmt::format("{}: {} clump spheres found, {} bodies need {} (clump spheres lost or deleted)",
-                                  where, all, st.size(), (bigint) st.size() * nsph));
-}
-
-// omega = Lambda I^-1 Lambda^T L with the cached rotation matrix
-static inline Vec3 omega_of(const Mat3 &R, const Vec3 &L, const cl::Body &b)
-{
-  const Vec3 pi = cl::mul_t(R, L);
-  return cl::mul(R, Vec3{pi[0] / b.inertia[0], pi[1] / b.inertia[1], pi[2] / b.inertia[2]});
-}
-
-void FixTDEMClump::refresh_kinematics()
-{
-  for (std::size_t b = 0; b < st.size(); b++) {
-    rot[b] = cl::rotation_matrix(st[b].q);
-    omg[b] = omega_of(rot[b], st[b].L, bprop);
-  }
-  if (correction != (int) cl::Correction::local_mass) return;
-  // com and inverse inertia (space frame, R diag(1/I) R^T) for the local_mass correction
-  bcom.resize(3 * st.size());
-  binv.resize(9 * st.size());
-  for (std::size_t b = 0; b < st.size(); b++) {
-    const Mat3 &R = rot[b];
-    for (int i = 0; i < 3; i++) {
-      bcom[3 * b + i] = st[b].x[i];
-      for (int j = 0; j < 3; j++) {
-        double s = 0.0;
-        for (int k = 0; k < 3; k++) s += R[i][k] * R[j][k] / bprop.inertia[k];
-        binv[9 * b + 3 * i + j] = s;
-      }
-    }
-  }
+  const std::int64_t all = bodies.map_atoms(atom->nlocal + atom->nghost, atom->nlocal, atom->nmax, atom->tag,
+                                            atom->radius, atom->rmass, world);
+  if (all != (std::int64_t) bodies.size() * bodies.nsph()) error->all(FLERR, bodies.lost_message(all));
 }
 
 void FixTDEMClump::setup_pre_neighbor()
 {
-  if (bodies_molecule && !formed) {
+  if (args.bodies_molecule && !formed) {
     form_bodies();
     formed = 1;
     map_atoms();
-    refresh_kinematics();
+    bodies.refresh_kinematics();
     set_spheres(false);
   } else {
     map_atoms();
     // the pair and wall styles of the setup force evaluation need com and inertia (local_mass)
-    if (correction == (int) cl::Correction::local_mass) refresh_kinematics();
+    if (correction == (int) cl::Correction::local_mass) bodies.refresh_kinematics();
   }
 }
 
@@ -257,8 +253,8 @@ void FixTDEMClump::setup(int /*vflag*/)
 {
   dtv = update->dt;
   dtf = 0.5 * update->dt * force->ftm2v;
-  refresh_kinematics();
-  sum_forces();
+  bodies.refresh_kinematics();
+  bodies.sum_forces(atom->nlocal, atom->f, atom->torque, world);
 }
 
 void FixTDEMClump::reset_dt()
@@ -267,86 +263,32 @@ void FixTDEMClump::reset_dt()
   dtf = 0.5 * update->dt * force->ftm2v;
 }
 
-// fsum <- force and torque about the com of every body. Each owned sphere writes its force and
-// torque (about the com) into its own slot; the slots are combined over the ranks (one non-zero
-// contribution per slot, so the reduction is exact) and summed per body in template order: the
-// result does not depend on the order of the atoms or on the number of ranks.
-void FixTDEMClump::sum_forces()
-{
-  const std::size_t nslot = st.size() * nsph;
-  if (sphere_f.size() != 6 * nslot) sphere_f.assign(6 * nslot, 0.0);
-  else std::fill(sphere_f.begin(), sphere_f.end(), 0.0);
-  const int nlocal = atom->nlocal;
-  double **f = atom->f, **t = atom->torque;
-  for (int i = 0; i < nlocal; i++) {
-    const int b = bodyidx[i];
-    if (b < 0) continue;
-    const Vec3 r = cl::mul(rot[b], tmpl.body[sphidx[i]].x);
-    double *fs = &sphere_f[6 * ((std::size_t) b * nsph + sphidx[i])];
-    fs[0] = f[i][0];
-    fs[1] = f[i][1];
-    fs[2] = f[i][2];
-    fs[3] = r[1] * f[i][2] - r[2] * f[i][1] + t[i][0];
-    fs[4] = r[2] * f[i][0] - r[0] * f[i][2] + t[i][1];
-    fs[5] = r[0] * f[i][1] - r[1] * f[i][0] + t[i][2];
-  }
-  if (comm->nprocs > 1)
-    MPI_Allreduce(MPI_IN_PLACE, sphere_f.data(), (int) sphere_f.size(), MPI_DOUBLE, MPI_SUM, world);
-  for (std::size_t b = 0; b < st.size(); b++) {
-    double *fb = &fsum[6 * b];
-    const double *fs = &sphere_f[6 * b * nsph];
-    for (int c = 0; c < 6; c++) fb[c] = fs[c];
-    for (int k = 1; k < nsph; k++)
-      for (int c = 0; c < 6; c++) fb[c] += fs[6 * k + c];
-  }
-}
-
-// owned spheres from their bodies: x (if positions), v, omega
+// owned spheres from their bodies: x (if positions, with the image flags), v, omega
 void FixTDEMClump::set_spheres(bool positions)
 {
-  const int nlocal = atom->nlocal;
   const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
-  for (int i = 0; i < nlocal; i++) {
-    const int b = bodyidx[i];
-    if (b < 0) continue;
-    const Vec3 r = cl::mul(rot[b], tmpl.body[sphidx[i]].x);
-    if (positions) {
-      const imageint img = atom->image[i];
-      const int box[3] = {(int) (img & IMGMASK) - IMGMAX, (int) (img >> IMGBITS & IMGMASK) - IMGMAX,
-                          (int) (img >> IMG2BITS) - IMGMAX};
-      for (int k = 0; k < 3; k++) atom->x[i][k] = st[b].x[k] + r[k] - box[k] * prd[k];
-    }
-    const Vec3 &w = omg[b];
-    atom->v[i][0] = st[b].v[0] + w[1] * r[2] - w[2] * r[1];
-    atom->v[i][1] = st[b].v[1] + w[2] * r[0] - w[0] * r[2];
-    atom->v[i][2] = st[b].v[2] + w[0] * r[1] - w[1] * r[0];
-    atom->omega[i][0] = w[0];
-    atom->omega[i][1] = w[1];
-    atom->omega[i][2] = w[2];
-  }
+  const imageint *image = atom->image;
+  bodies.set_spheres(
+      atom->nlocal, atom->x, atom->v, atom->omega, prd,
+      [image](int i, int *box) {
+        const imageint img = image[i];
+        box[0] = (int) (img & IMGMASK) - IMGMAX;
+        box[1] = (int) (img >> IMGBITS & IMGMASK) - IMGMAX;
+        box[2] = (int) (img >> IMG2BITS) - IMGMAX;
+      },
+      positions);
 }
 
 void FixTDEMClump::initial_integrate(int /*vflag*/)
 {
-  const double h = dtv, c = 2.0 * dtf / dtv;  // c = ftm2v
-  for (std::size_t b = 0; b < st.size(); b++) {
-    const double *fb = &fsum[6 * b];
-    cl::initial_integrate(st[b], bprop, Vec3{c * fb[0], c * fb[1], c * fb[2]}, Vec3{c * fb[3], c * fb[4], c * fb[5]},
-                          h, scheme);
-  }
-  refresh_kinematics();
+  bodies.initial_integrate(dtv, 2.0 * dtf / dtv);  // 2 dtf / dtv = ftm2v
   set_spheres(true);
 }
 
 void FixTDEMClump::final_integrate()
 {
-  sum_forces();
-  const double h = dtv, c = 2.0 * dtf / dtv;
-  for (std::size_t b = 0; b < st.size(); b++) {
-    const double *fb = &fsum[6 * b];
-    cl::final_integrate(st[b], bprop, Vec3{c * fb[0], c * fb[1], c * fb[2]}, Vec3{c * fb[3], c * fb[4], c * fb[5]}, h);
-    omg[b] = omega_of(rot[b], st[b].L, bprop);
-  }
+  bodies.sum_forces(atom->nlocal, atom->f, atom->torque, world);
+  bodies.final_integrate(dtv, 2.0 * dtf / dtv);
   set_spheres(false);
 }
 
@@ -354,41 +296,20 @@ void FixTDEMClump::final_integrate()
 
 double FixTDEMClump::compute_scalar()
 {
-  double e = 0.0;
-  for (const auto &s : st) e += cl::kinetic_energy(s, bprop);
-  return e * force->mvv2e;
+  return bodies.kinetic_energy(force->mvv2e);
 }
 
 // 1: bodies, 2-4: total momentum, 5-7: sum of the bodies' angular momenta about their com,
 // 8: translational, 9: rotational kinetic energy
 double FixTDEMClump::compute_vector(int n)
 {
-  if (n == 0) return (double) st.size();
-  double out = 0.0;
-  for (const auto &s : st) {
-    if (n >= 1 && n <= 3) out += bprop.mass * s.v[n - 1];
-    else if (n >= 4 && n <= 6) out += s.L[n - 4];
-    else if (n == 7) out += 0.5 * bprop.mass * cl::dot(s.v, s.v) * force->mvv2e;
-    else if (n == 8) out += cl::rotational_energy(s, bprop) * force->mvv2e;
-  }
-  return out;
+  return bodies.vector(n, force->mvv2e);
 }
 
 // row per body: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
 double FixTDEMClump::compute_array(int i, int j)
 {
-  if (i < 0 || i >= (int) st.size()) return 0.0;
-  const cl::State &s = st[i];
-  if (j == 0) return (double) molid[i];
-  if (j <= 3) return s.x[j - 1];
-  if (j <= 6) return s.v[j - 4];
-  if (j == 7) return s.q.w;
-  if (j == 8) return s.q.x;
-  if (j == 9) return s.q.y;
-  if (j == 10) return s.q.z;
-  if (j <= 13) return s.L[j - 11];
-  if (j <= 16) return cl::angular_velocity(s, bprop)[j - 14];
-  return 0.0;
+  return bodies.array(i, j);
 }
 
 // "body" / "tdem_clump_body": int per atom (owned and ghost), body index or -1;
@@ -398,11 +319,11 @@ double FixTDEMClump::compute_array(int i, int j)
 void *FixTDEMClump::extract(const char *name, int &dim)
 {
   dim = 1;
-  if (std::strcmp(name, "body") == 0 || std::strcmp(name, "tdem_clump_body") == 0) return (void *) bodyidx;
-  if (std::strcmp(name, "masstotal") == 0) return (void *) masstotal.data();
-  if (std::strcmp(name, "tdem_clump_sphere") == 0) return (void *) sphidx;
-  if (std::strcmp(name, "tdem_clump_com") == 0) return (void *) bcom.data();
-  if (std::strcmp(name, "tdem_clump_inv_inertia") == 0) return (void *) binv.data();
+  if (std::strcmp(name, "body") == 0 || std::strcmp(name, "tdem_clump_body") == 0) return (void *) bodies.body_index();
+  if (std::strcmp(name, "masstotal") == 0) return (void *) bodies.masses();
+  if (std::strcmp(name, "tdem_clump_sphere") == 0) return (void *) bodies.sphere_index();
+  if (std::strcmp(name, "tdem_clump_com") == 0) return (void *) bodies.com();
+  if (std::strcmp(name, "tdem_clump_inv_inertia") == 0) return (void *) bodies.inverse_inertia();
   dim = 0;
   if (std::strcmp(name, "tdem_clump_correction") == 0) return (void *) &correction;
   return nullptr;
@@ -410,17 +331,12 @@ void *FixTDEMClump::extract(const char *name, int &dim)
 
 /* ---------------------------------------------------------------------- */
 
+// magic, nbody, nsph, formed, then per body: mol, x, v, q, L, nsph tags
 void FixTDEMClump::write_restart(FILE *fp)
 {
   if (comm->me != 0) return;
-  std::vector<double> buf = {kRestartMagic, (double) st.size(), (double) nsph, (double) formed};
-  for (std::size_t b = 0; b < st.size(); b++) {
-    const cl::State &s = st[b];
-    const double row[kBodyDoubles] = {(double) molid[b], s.x[0], s.x[1], s.x[2], s.v[0], s.v[1], s.v[2],
-                                      s.q.w, s.q.x, s.q.y, s.q.z, s.L[0], s.L[1], s.L[2]};
-    buf.insert(buf.end(), row, row + kBodyDoubles);
-    for (int k = 0; k < nsph; k++) buf.push_back((double) btags[b * nsph + k]);
-  }
+  std::vector<double> buf = {kRestartMagic, (double) bodies.size(), (double) bodies.nsph(), (double) formed};
+  bodies.pack(buf, false);
   const int size = (int) (buf.size() * sizeof(double));
   fwrite(&size, sizeof(int), 1, fp);
   fwrite(buf.data(), sizeof(double), buf.size(), fp);
@@ -430,37 +346,17 @@ void FixTDEMClump::restart(char *raw)
 {
   const double *buf = (const double *) raw;
   if (buf[0] != kRestartMagic) error->all(FLERR, where + ": the restart record is not a tdem/clump record");
-  const int nb = (int) buf[1], ns = (int) buf[2];
-  if (ns != nsph)
-    error->all(FLERR, fmt::format("{}: the restart file has clumps of {} spheres, template {} has {}", where, ns,
-                                  tmpl.name, nsph));
   formed = (int) buf[3];
-  st.clear();
-  molid.clear();
-  btags.clear();
-  masstotal.clear();
-  fsum.clear();
-  rot.clear();
-  omg.clear();
-  slot.clear();
-  const double *p = buf + 4;
-  for (int b = 0; b < nb; b++) {
-    cl::State s;
-    s.x = {p[1], p[2], p[3]};
-    s.v = {p[4], p[5], p[6]};
-    s.q = {p[7], p[8], p[9], p[10]};
-    s.L = {p[11], p[12], p[13]};
-    std::vector<tagint> tags(nsph);
-    for (int k = 0; k < nsph; k++) tags[k] = (tagint) p[kBodyDoubles + k];
-    add_body((tagint) p[0], s, tags.data());
-    p += kBodyDoubles + nsph;
+  try {
+    bodies.unpack(buf + 4, (int) buf[1], (int) buf[2], false);
+  } catch (const std::exception &e) {
+    error->all(FLERR, e.what());
   }
+  size_array_rows = (int) bodies.size();
   restarted = 1;
 }
 
 double FixTDEMClump::memory_usage()
 {
-  return (double) nmax_idx * 2 * sizeof(int) +
-         (double) st.size() * (sizeof(cl::State) + sizeof(Mat3) + sizeof(Vec3) + 8 * sizeof(double)) +
-         (double) btags.size() * (sizeof(tagint) + 32);
+  return bodies.memory_usage();
 }

@@ -3,5 +3,5 @@
 # fix tdem/clump (docs/clumps_liggghts.md)
 set(TDEM_LIG_MODULE_SOURCES ${CMAKE_CURRENT_LIST_DIR}/clump_register.cpp
                             ${CMAKE_CURRENT_LIST_DIR}/fix_tdem_clump.cpp
-                            ${CMAKE_CURRENT_LIST_DIR}/fix_tdem_clump_bodies.cpp)
+                            ${CMAKE_CURRENT_LIST_DIR}/fix_tdem_clump_correction.cpp)
 set(TDEM_LIG_MODULE_INCLUDES ${CMAKE_CURRENT_LIST_DIR})

@@ -11,14 +11,10 @@
 // Needs per-atom molecule IDs (atom_style hybrid sphere molecular) and
 // `neigh_modify exclude molecule GROUP` (the spheres of one clump must not interact).
 //
-// Design ("global bodies", as LAMMPS fix rigid): every rank keeps the state {x, v, q, L} of every
-// body; in final_integrate each rank writes force and torque (about the com) of its owned spheres
-// into per-sphere slots and sums them per body in template order; MPI_Allreduce of 6 doubles per
-// body (one rank contributes a non-zero value) or, for a body split over ranks, of its 6 nsph slot
-// values (summed after the reduction in template order): the sum is bitwise independent of the rank
-// count. Every rank advances every body identically (rigid_body.h) and
-// sets x, v, omega of its owned spheres. Spheres of one body may lie on several ranks; positions use
-// the image flags (x = com + Lambda r_hat - image * L_box).
+// Design ("global bodies", as LAMMPS fix rigid; the bodies, their force sums and time stepping are
+// shared with the LAMMPS fix: src/fixes/clumps/body_set.h): every rank keeps and advances every
+// body; the force sums are bitwise independent of the rank count. Spheres of one body may lie on
+// several ranks; positions use the image flags (x = com + Lambda r_hat - image * L_box).
 //
 // The force of the last final_integrate is kept (and written to restart files): a new run, or a run
 // after read_restart, starts with it instead of the set-up force, which in LIGGGHTS differs from it
@@ -30,7 +26,6 @@
 #include <cstdio>
 #include <string>
 #include <utility>
-#include <unordered_map>
 #include <vector>
 
 #include "fix.h"
@@ -38,7 +33,8 @@
 #include "contact/multi_contact/contact_tally.h"
 #include "contact/multi_contact/contact_tally_mpi.h"
 #include "contact/multi_contact/multi_contact.h"
-#include "fixes/clumps/rigid_body.h"
+#include "fixes/clumps/body_set.h"
+#include "fixes/clumps/clump_args.h"
 #include "tdem_liggghts_clump_link.h"
 
 namespace LAMMPS_NS {
@@ -70,32 +66,9 @@ class FixTDEMClump : public Fix, public tdem::liggghts::clump_link::Correction {
 
  private:
   std::string where_;  // "fix ID tdem/clump" for messages
-  tdem::clumps::Template tmpl_;
-  tdem::clumps::Body bprop_;
-  tdem::clumps::Rotation scheme_;
-  int nsph_;
-  std::vector<double> sphere_mass_;
-  bool bodies_molecule_, restarted_, formed_, have_force_, need_set_;
-  // insertion
-  int ninsert_, insert_type_;
-  std::string insert_region_;
-  long long insert_seed_;
-  double insert_vel_[3];
-  // global bodies
-  std::vector<tdem::clumps::State> st_;
-  std::vector<int> molid_;
-  std::vector<int> btags_;  // nbody * nsph sphere tags (template order)
-  std::vector<double> fsum_;     // 6 per body: force, torque about the com
-  std::vector<double> slotf_;    // 6 per sphere slot (local)
-  std::vector<double> red_;      // reduction buffer: 6 per whole body, 6 nsph per split body
-  std::vector<std::size_t> red_off_;  // offsets into red_ per body
-  std::vector<char> split_;      // body split over ranks (set in map_atoms)
-  std::vector<tdem::clumps::Mat3> rot_;
-  std::vector<tdem::clumps::Vec3> omg_;
-  std::unordered_map<int, int> slot_;  // tag -> body * nsph + sphere
-  int nmax_idx_;
-  int* bodyidx_;
-  int* sphidx_;
+  tdem::clumps::BodySet bodies_;  // the bodies, shared with LAMMPS (fixes/clumps/body_set.h)
+  tdem::clumps::ClumpArgs args_;  // the fix's arguments (insert, bodies molecule, correction)
+  bool restarted_, formed_, have_force_, need_set_;
 
   // multiple-contact correction (docs/clumps_liggghts.md, "Multiple-contact correction")
   tdem::clumps::Correction correction_;
@@ -114,10 +87,7 @@ class FixTDEMClump : public Fix, public tdem::liggghts::clump_link::Correction {
   void insert_clumps();
   int form_bodies();
   void map_atoms();
-  void refresh_kinematics();
-  void sum_forces();
   void set_spheres(bool positions);
-  void add_body(int mol, const tdem::clumps::State& s, const int* tags);
 };
 
 }  // namespace LAMMPS_NS

@@ -28,7 +28,6 @@ FixTDEMGrate::~FixTDEMGrate()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(slots);
   memory->destroy(mass_rigid);
   extlist = nullptr;  // owned by extlist_store
 }
@@ -190,7 +189,7 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
     if (!(mask[i] & groupbit)) continue;
     const double rad = radius[i];
     const tg::Vec3 xi{x[i][0], x[i][1], x[i][2]};
-    double *sl = slots[i];
+    double *sl = rows_[i];
 
     // ---- candidate contacts: the bounding box of the whole grate first (an atom above the
     // bed's lowest layer stops here), then the bounding box of each box, then its closest point.
@@ -396,37 +395,15 @@ void *FixTDEMGrate::extract(const char *name, int &dim)
 
 double FixTDEMGrate::memory_usage()
 {
-  return (double) atom->nmax * width * sizeof(double) + (double) nmax_rigid * sizeof(double);
-}
-
-void FixTDEMGrate::grow_arrays(int n)
-{
-  memory->grow(slots, n, width, "tdem/grate:slots");
-}
-
-void FixTDEMGrate::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int m = 0; m < width; m++) slots[j][m] = slots[i][m];
+  return rows_memory() + (double) nmax_rigid * sizeof(double);
 }
 
 void FixTDEMGrate::set_arrays(int i)
 {
   for (int s = 0; s < max_contacts; s++) {
-    slots[i][s * slot_size] = -1.0;
-    for (int m = 1; m < slot_size; m++) slots[i][s * slot_size + m] = 0.0;
+    rows_[i][s * slot_size] = -1.0;
+    for (int m = 1; m < slot_size; m++) rows_[i][s * slot_size + m] = 0.0;
   }
-}
-
-int FixTDEMGrate::pack_exchange(int i, double *buf)
-{
-  for (int m = 0; m < width; m++) buf[m] = slots[i][m];
-  return width;
-}
-
-int FixTDEMGrate::unpack_exchange(int nlocal, double *buf)
-{
-  for (int m = 0; m < width; m++) slots[nlocal][m] = buf[m];
-  return width;
 }
 
 // global restart: the grate time origin and the layout of the per-atom slots
@@ -457,44 +434,23 @@ void FixTDEMGrate::restart(char *buf)
                           "; define the grate and the law as before the restart (or use a new fix ID)");
 }
 
-int FixTDEMGrate::pack_restart(int i, double *buf)
-{
-  // buf[0] = number of values including itself, as every per-atom restart fix
-  int n = 0;
-  buf[n++] = width + 1;
-  for (int m = 0; m < width; m++) buf[n++] = slots[i][m];
-  return n;
-}
-
 void FixTDEMGrate::unpack_restart(int nlocal, int nth)
 {
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  const int count = static_cast<int>(extra[nlocal][m]) - 1;
-  m++;
+  const double *rec = tdem::host::restart_record(atom->extra, nlocal, nth);
+  const int count = static_cast<int>(rec[0]) - 1;
   set_arrays(nlocal);
   // the stored number of slots may differ from max_contacts: keep the occupied ones
   const int stored = count / slot_size;
   int k = 0;
   for (int s = 0; s < stored; s++) {
-    const double *src = &extra[nlocal][m + s * slot_size];
+    const double *src = &rec[1 + s * slot_size];
     if (src[0] < 0.0) continue;
     if (k >= max_contacts)
       error->one(FLERR, where + ": atom " + std::to_string(atom->tag[nlocal]) +
                             " has more contacts in the restart file than max_contacts = " +
                             std::to_string(max_contacts));
-    for (int q = 0; q < slot_size; q++) slots[nlocal][k * slot_size + q] = src[q];
+    for (int q = 0; q < slot_size; q++) rows_[nlocal][k * slot_size + q] = src[q];
     ++k;
   }
 }
 
-int FixTDEMGrate::maxsize_restart()
-{
-  return 1 + width;
-}
-
-int FixTDEMGrate::size_restart(int /*nlocal*/)
-{
-  return 1 + width;
-}

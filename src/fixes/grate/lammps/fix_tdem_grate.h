@@ -27,6 +27,7 @@ FixStyle(tdem/grate,FixTDEMGrate);
 #define TDEM_LMP_FIX_TDEM_GRATE_H
 
 #include "fix.h"
+#include "pair_styles/per_atom_rows.h"
 #include "fixes/grate/geometry.h"
 #include "tdem_lammps_law.h"
 
@@ -36,7 +37,8 @@ FixStyle(tdem/grate,FixTDEMGrate);
 
 namespace LAMMPS_NS {
 
-class FixTDEMGrate : public Fix {
+// per-atom contact slots: tdem::host::PerAtomRows (rows_, width_ values per atom)
+class FixTDEMGrate : public tdem::host::PerAtomRows<Fix> {
  public:
   FixTDEMGrate(class LAMMPS *, int, char **);
   ~FixTDEMGrate() override;
@@ -48,17 +50,10 @@ class FixTDEMGrate : public Fix {
   double compute_vector(int) override;
   void *extract(const char *, int &) override;
   double memory_usage() override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
   void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
-  int pack_restart(int, double *) override;
   void unpack_restart(int, int) override;
-  int size_restart(int) override;
-  int maxsize_restart() override;
   void reset_dt() override;
 
   template <int M, int E, int S, int TL> void eval();
@@ -88,8 +83,7 @@ class FixTDEMGrate : public Fix {
   int max_contacts;   // K history slots per atom
   int size_history;   // the law's history values per contact
   int slot_size;      // 1 + size_history (box index, history)
-  int width;          // K * slot_size values per atom
-  double **slots;     // per atom: K x (box index or -1, history)
+  // rows_: per atom K x (box index or -1, history), width_ = K * slot_size values
 
   int vtk_every;
   std::string vtk_prefix;

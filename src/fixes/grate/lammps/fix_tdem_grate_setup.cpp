@@ -54,7 +54,7 @@ bool parse_int(const char *s, long &v)
 /* ---------------------------------------------------------------------- */
 
 FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), slots(nullptr), fix_rigid(nullptr), mass_rigid(nullptr)
+    PerAtomRows(lmp, narg, arg), fix_rigid(nullptr), mass_rigid(nullptr)
 {
   where = std::string("fix ") + id + " tdem/grate";
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
@@ -292,7 +292,7 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
   extlist = extlist_store.data();
 
   slot_size = 1 + size_history;
-  width = max_contacts * slot_size;
+  rows_init(max_contacts * slot_size, "tdem/grate:slots");
   boxes_ = grate_->boxes(0.0);
   // half extents of the axis-aligned bounding box of each box (the boxes only translate)
   for (const auto &b : boxes_)

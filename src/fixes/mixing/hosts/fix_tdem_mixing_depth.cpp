@@ -37,7 +37,7 @@ std::string FixTDEMMixingDepth::ctx() const
 }
 
 FixTDEMMixingDepth::FixTDEMMixingDepth(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), nmax_rows(0), store(nullptr), snapshot(0), last_step(-1), grate_fix(nullptr), fp(nullptr), time_offset(0.0),
+    PerAtomRows(lmp, narg, arg), snapshot(0), last_step(-1), grate_fix(nullptr), fp(nullptr), time_offset(0.0),
     offset_pending(0), saved_time(0.0), saved_step(0)
 {
   if (!atom->radius_flag) tdem_host::all(error, FLERR, ctx() + " requires per-atom radii (atom_style sphere)");
@@ -61,6 +61,7 @@ FixTDEMMixingDepth::FixTDEMMixingDepth(LAMMPS *lmp, int narg, char **arg) :
   restart_global = 1;
   restart_peratom = 1;
   create_attribute = 1;
+  rows_init(stride, "tdem/mixing/depth:rows");
   tdem_host::set_maxexchange(this, stride);
   rs.region.resize(cfg.bins.count);
   rs.count_now.assign(cfg.bins.count, 0);
@@ -87,7 +88,6 @@ FixTDEMMixingDepth::~FixTDEMMixingDepth()
 {
   atom->delete_callback(id, tdem_host::CB_GROW);
   atom->delete_callback(id, tdem_host::CB_RESTART);
-  memory->destroy(store);
   if (fp) fclose(fp);
 }
 
@@ -144,7 +144,7 @@ void FixTDEMMixingDepth::take_snapshot()
     rows.push_back(static_cast<double>(atom->tag[i]));
     for (int k = 0; k < 3; k++) rows.push_back(atom->x[i][k]);
     rows.push_back(atom->radius[i]);
-    for (int k = 0; k < mh::kStateWidth; k++) rows.push_back(store[i][mh::kPeratomCols + k]);
+    for (int k = 0; k < mh::kStateWidth; k++) rows.push_back(rows_[i][mh::kPeratomCols + k]);
   }
   std::vector<double> all = mh::allgather_sorted(world, rows, mh::kDepthWidth);
 
@@ -185,11 +185,11 @@ void FixTDEMMixingDepth::take_snapshot()
     const long r = mh::find_row(all, mh::kDepthWidth, static_cast<double>(atom->tag[i]));
     if (r < 0) tdem_host::one(error, FLERR, ctx() + ": internal error, atom missing from the gather");
     const double *s = &all[r * mh::kDepthWidth + 5];
-    for (int k = 0; k < mh::kStateWidth; k++) store[i][mh::kPeratomCols + k] = s[k];
-    store[i][0] = depth[r];
-    store[i][1] = mh::state_mean(s);
-    store[i][2] = mh::state_sigma(s);
-    store[i][3] = mh::state_q(s);
+    for (int k = 0; k < mh::kStateWidth; k++) rows_[i][mh::kPeratomCols + k] = s[k];
+    rows_[i][0] = depth[r];
+    rows_[i][1] = mh::state_mean(s);
+    rows_[i][2] = mh::state_sigma(s);
+    rows_[i][3] = mh::state_q(s);
   }
   table = mh::depth_table(rs, cfg.bins.count);
   if (fp) {
@@ -217,68 +217,7 @@ double FixTDEMMixingDepth::compute_array(int i, int j)
 
 double FixTDEMMixingDepth::memory_usage()
 {
-  return (double) nmax_rows * stride * sizeof(double);
-}
-
-void FixTDEMMixingDepth::grow_arrays(int n)
-{
-  if (n <= nmax_rows) return;
-  memory->grow(store, n, stride, "tdem/mixing/depth:store");
-  array_atom = store;
-  for (int i = nmax_rows; i < n; i++)
-    for (int m = 0; m < stride; m++) store[i][m] = 0.0;
-  nmax_rows = n;
-}
-
-void FixTDEMMixingDepth::copy_arrays(int i, int j, int /*delflag*/)
-{
-  for (int m = 0; m < stride; m++) store[j][m] = store[i][m];
-}
-
-void FixTDEMMixingDepth::set_arrays(int i)
-{
-  for (int m = 0; m < stride; m++) store[i][m] = 0.0;
-}
-
-int FixTDEMMixingDepth::pack_exchange(int i, double *buf)
-{
-  for (int m = 0; m < stride; m++) buf[m] = store[i][m];
-  return stride;
-}
-
-int FixTDEMMixingDepth::unpack_exchange(int nlocal, double *buf)
-{
-  for (int m = 0; m < stride; m++) store[nlocal][m] = buf[m];
-  return stride;
-}
-
-int FixTDEMMixingDepth::pack_restart(int i, double *buf)
-{
-  buf[0] = stride + 1;
-  for (int m = 0; m < stride; m++) buf[1 + m] = store[i][m];
-  return stride + 1;
-}
-
-void FixTDEMMixingDepth::unpack_restart(int nlocal, int nth)
-{
-  double **extra = atom->extra;
-  int m = 0;
-  for (int i = 0; i < nth; i++) m += static_cast<int>(extra[nlocal][m]);
-  if (static_cast<int>(extra[nlocal][m]) != stride + 1) {
-    for (int k = 0; k < stride; k++) store[nlocal][k] = 0.0;
-    return;
-  }
-  for (int k = 0; k < stride; k++) store[nlocal][k] = extra[nlocal][m + 1 + k];
-}
-
-int FixTDEMMixingDepth::maxsize_restart()
-{
-  return stride + 1;
-}
-
-int FixTDEMMixingDepth::size_restart(int /*nlocal*/)
-{
-  return stride + 1;
+  return rows_memory();
 }
 
 // global record: nbins, snapshot, last step, step now, time now, then per bin total_abs, total_dt, samples, sum_d, sum_d2,

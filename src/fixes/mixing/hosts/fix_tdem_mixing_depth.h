@@ -18,12 +18,13 @@ FixStyle(tdem/mixing/depth,FixTDEMMixingDepth);
 #include "fix.h"
 #include "tdem_fix_host.h"
 #include "fixes/mixing/mixing_host.h"
+#include "pair_styles/per_atom_rows.h"
 
 #include <cstdio>
 
 namespace LAMMPS_NS {
 
-class FixTDEMMixingDepth : public Fix {
+class FixTDEMMixingDepth : public tdem::host::PerAtomRows<Fix> {
  public:
   FixTDEMMixingDepth(class LAMMPS *, int, char **);
   ~FixTDEMMixingDepth() override;
@@ -35,23 +36,13 @@ class FixTDEMMixingDepth : public Fix {
   double compute_array(int, int) override;
 
   double memory_usage() override;
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  void set_arrays(int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int maxsize_restart() override;
-  int size_restart(int) override;
   void write_restart(FILE *) override;
   void restart(char *) override;
 
  private:
   tdem::grate::mixing::host::DepthConfig cfg;
   static constexpr int stride = tdem::grate::mixing::host::kPeratomCols + tdem::grate::mixing::host::kStateWidth;
-  int nmax_rows;
-  double **store;  // per atom: output (4) + state (9)
+  // rows_ (tdem::host::PerAtomRows): per atom the output (4) + the state (9)
   std::vector<double> table;
   tdem::grate::mixing::host::RegionSums rs;
   long snapshot;

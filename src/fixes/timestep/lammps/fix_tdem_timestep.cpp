@@ -21,6 +21,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <string>
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -142,51 +144,10 @@ int FixTDEMTimestep::setmask()
 void FixTDEMTimestep::init()
 {
   // the scheme: `scheme`, else the one of a fix tdem/integrate on the group, else nve/sphere
-  scheme = opt.scheme;
-  if (opt.scheme_given) return;
-  scheme = ti::Scheme::velocity_verlet;
-  for (int i = 0; i < modify->nfix; i++) {
-    Fix *f = modify->fix[i];
-    if (strcmp(f->style, "tdem/integrate") != 0) continue;
-    auto *fi = dynamic_cast<FixTDEMIntegrate *>(f);
-    if (!fi) continue;
-    scheme = fi->scheme_in_use();
-    break;
-  }
+  scheme = th::scheme_in_use<FixTDEMIntegrate>(opt, modify);
 }
 
 /* ---------------------------------------------------------------------- */
-
-void FixTDEMTimestep::type_minima(int mask_bits, std::vector<double> &mmin, std::vector<double> &rmin,
-                                  std::vector<double> &rhomin)
-{
-  const int nt = atom->ntypes;
-  const std::vector<double> loc = tdem::advice::host::local_type_minima(atom->rmass, atom->radius, atom->type,
-                                                                       atom->mask, atom->nlocal, mask_bits, nt);
-  std::vector<double> all(loc.size());
-  MPI_Allreduce(loc.data(), all.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MIN, world);
-  mmin.assign(all.begin(), all.begin() + nt + 1);
-  rmin.assign(all.begin() + nt + 1, all.begin() + 2 * (nt + 1));
-  rhomin.assign(all.begin() + 2 * (nt + 1), all.end());
-}
-
-double FixTDEMTimestep::largest_speed()
-{
-  const double v2 = tdem::advice::host::local_largest_speed2(atom->v, atom->mask, atom->nlocal, groupbit);
-  double all = 0.0;
-  MPI_Allreduce(&v2, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return std::sqrt(all);
-}
-
-// The largest overlap per type pair among the pairs of the pair style's neighbour list.
-void FixTDEMTimestep::largest_overlaps(std::vector<double> &xi)
-{
-  std::vector<double> loc;
-  tdem::advice::host::local_largest_overlaps(force->pair ? force->pair->list : nullptr, atom->x, atom->radius,
-                                             atom->type, atom->mask, groupbit, atom->ntypes, NEIGHMASK, loc);
-  xi.assign(loc.size(), 0.0);
-  MPI_Allreduce(loc.data(), xi.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MAX, world);
-}
 
 /* ---------------------------------------------------------------------- */
 
@@ -195,7 +156,7 @@ void FixTDEMTimestep::build_rows(double v_setup)
   rows.clear();
   const int nt = atom->ntypes;
   std::vector<double> mmin, rmin, rhomin;
-  type_minima(groupbit, mmin, rmin, rhomin);
+  th::type_minima(world, atom, groupbit, mmin, rmin, rhomin);
   auto present = [&](int t) { return mmin[t] < BIG && rmin[t] < BIG; };
 
   // the pair style
@@ -275,7 +236,7 @@ void FixTDEMTimestep::build_rows(double v_setup)
       continue;
     }
     std::vector<double> wm, wr, wrho;
-    type_minima(groupbit | w->groupbit, wm, wr, wrho);
+    th::type_minima(world, atom, groupbit | w->groupbit, wm, wr, wrho);
     const tdem_lammps::LawCoeffs &c = w->wall_law();
     for (int t = 1; t <= nt; t++) {
       if (!(wm[t] < BIG)) continue;
@@ -302,78 +263,37 @@ void FixTDEMTimestep::build_rows(double v_setup)
 void FixTDEMTimestep::setup(int)
 {
   runtime_warned = false;
-  double v_setup = opt.vmax;
-  std::string vsrc = "vmax";
-  if (!opt.vmax_given) {
-    v_setup = 2.0 * largest_speed();
-    vsrc = "2 x the largest particle speed";
-    if (!(v_setup > 0.0)) {
-      v_setup = 1.0;
-      vsrc = "no vmax given and every particle at rest: 1 (velocity units)";
-    }
-  }
-  build_rows(v_setup);
-  const ta::Policy pol = th::policy_of(opt);
-  if (comm->me == 0) {
-    std::string head = fmt::format("fix {} tdem/timestep: scheme {}, dt = {}, v_max = {} ({}), check {}, "
-                                   "every {}, fraction {}",
-                                   id, ti::info(scheme).name, update->dt, v_setup, vsrc, th::to_string(opt.check),
-                                   opt.every, opt.fraction);
-    std::string out = th::table(rows, head, pol);
-    for (const th::Row &r : rows)
-      if (r.advised) out += "  " + r.what + ": " + ta::summary(r.a) + "\n";
-    if (rows.empty()) out += "  (no type pair or wall with a supported law in the group)\n";
-    utils::logmesg(lmp, out);
-  }
-  // the vector at set-up: from the set-up advice
-  vec[0] = INFINITY, vec[1] = INFINITY, vec[2] = 0.0;
-  for (const th::Row &r : rows)
-    if (r.advised) {
-      vec[0] = std::min(vec[0], r.a.dt_critical);
-      vec[1] = std::min(vec[1], r.a.steps_per_contact);
-    }
-  vec[2] = std::isfinite(vec[0]) && vec[0] > 0.0 ? update->dt / vec[0] : 0.0;
+  const th::SetupSpeed v = th::setup_speed(opt, opt.vmax_given ? 0.0 : th::largest_speed(world, atom, groupbit));
+  build_rows(v.v);
+  const th::SetupReport rep = th::setup_report(rows, opt, scheme, update->dt, v, where());
+  if (comm->me == 0) utils::logmesg(lmp, rep.log);
+  std::copy(rep.vec, rep.vec + 3, vec);
   last_step = update->ntimestep;
-
-  if (opt.check == th::CheckMode::off) return;
-  std::string stop;
-  for (th::Row &r : rows) {
-    if (!r.advised) continue;
-    const ta::Check c = ta::check(r.a, update->dt, pol);
-    if (c.verdict == ta::Verdict::stop && stop.empty()) stop = r.what + ": " + c.message;
-    if (c.verdict == ta::Verdict::warn && comm->me == 0)
-      error->warning(FLERR, fmt::format("fix {} tdem/timestep: {}: {}", id, r.what, c.message));
-    if (c.verdict == ta::Verdict::stop && opt.check == th::CheckMode::warn && comm->me == 0)
-      error->warning(FLERR, fmt::format("fix {} tdem/timestep: {}: {}", id, r.what, c.message));
-  }
-  if (!stop.empty() && opt.check == th::CheckMode::stop)
-    error->all(FLERR, fmt::format("fix {} tdem/timestep (check stop): {}", id, stop));
+  if (comm->me == 0)
+    for (const std::string &w : rep.warnings) error->warning(FLERR, w);
+  if (!rep.stop.empty()) error->all(FLERR, rep.stop);
 }
 
 /* ---------------------------------------------------------------------- */
 
 void FixTDEMTimestep::run_check(const char *when)
 {
-  const double speed = largest_speed();
-  std::vector<double> xi;
-  largest_overlaps(xi);
-  const int nt = atom->ntypes;
-  auto row_xi = [&](const th::Row &r) { return r.jtype ? xi[r.itype * (nt + 1) + r.jtype] : 0.0; };
-  const ta::Policy pol = th::policy_of(opt);
-  const th::Now now = th::recheck(rows, 2.0 * speed, speed, row_xi, scheme, update->dt, pol);
-  vec[0] = now.dt_critical;
-  vec[1] = now.steps_per_contact;
-  vec[2] = now.fraction;
+  const double speed = th::largest_speed(world, atom, groupbit);
+  const std::vector<double> xi =
+      th::largest_overlaps(world, atom, force->pair ? force->pair->list : nullptr, groupbit, NEIGHMASK);
+  const th::RuntimeReport rep =
+      th::runtime_report(rows, speed, xi, atom->ntypes, scheme, update->dt, opt, when, update->ntimestep, where());
+  std::copy(rep.vec, rep.vec + 3, vec);
   last_step = update->ntimestep;
-  if (!when || opt.check == th::CheckMode::off || now.verdict == ta::Verdict::ok) return;
-  double xmax = 0.0;
-  for (double v : xi) xmax = std::max(xmax, v);
-  const std::string msg = fmt::format("fix {} tdem/timestep: {} check at step {} (largest particle speed {}, "
-                                      "approach velocity bound {}, largest pair overlap {}): {}",
-                                      id, when, update->ntimestep, speed, 2.0 * speed, xmax, now.message);
-  if (now.verdict == ta::Verdict::stop && opt.check == th::CheckMode::stop) error->all(FLERR, msg);
-  if (!runtime_warned && comm->me == 0) error->warning(FLERR, msg + " (warned once per run)");
-  runtime_warned = true;
+  if (rep.action == th::Action::stop) error->all(FLERR, rep.message);
+  if (rep.action == th::Action::warn && !runtime_warned && comm->me == 0)
+    error->warning(FLERR, rep.message + " (warned once per run)");
+  if (rep.action != th::Action::none) runtime_warned = true;
+}
+
+std::string FixTDEMTimestep::where() const
+{
+  return std::string("fix ") + id + " tdem/timestep";
 }
 
 void FixTDEMTimestep::end_of_step()

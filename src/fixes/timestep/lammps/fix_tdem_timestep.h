@@ -26,6 +26,7 @@ FixStyle(tdem/timestep,FixTDEMTimestep);
 
 #include "fixes/timestep/host_table.h"
 
+#include <string>
 #include <vector>
 
 namespace LAMMPS_NS {
@@ -48,11 +49,8 @@ class FixTDEMTimestep : public Fix {
   bigint last_step;  // step of the values in vec
 
   void build_rows(double v_setup);
-  void type_minima(int mask, std::vector<double> &mmin, std::vector<double> &rmin,
-                   std::vector<double> &rhomin);
-  double largest_speed();
-  void largest_overlaps(std::vector<double> &xi);
   void run_check(const char *when);
+  std::string where() const;
 };
 
 }  // namespace LAMMPS_NS

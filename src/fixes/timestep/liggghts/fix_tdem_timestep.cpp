@@ -5,6 +5,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -41,8 +42,6 @@ namespace ti = tdem::integrators;
 namespace {
 
 constexpr double kBig = std::numeric_limits<double>::max();
-
-std::string str(double v) { return th::num(v); }
 
 // The tdem normal laws: lsd, hertz, the units of src/contact/laws.h, then the rest.
 const std::vector<std::string>& tdem_laws() {
@@ -138,19 +137,7 @@ void FixTDEMTimestep::say(const std::string& s) {
 
 /* ---------------------------------------------------------------------- */
 
-void FixTDEMTimestep::init() {
-  scheme_ = opt_.scheme;
-  if (opt_.scheme_given) return;
-  scheme_ = ti::Scheme::velocity_verlet;
-  for (int i = 0; i < modify->nfix; i++) {
-    Fix* f = modify->fix[i];
-    if (strcmp(f->style, "tdem/integrate") != 0) continue;
-    auto *fi = dynamic_cast<FixTDEMIntegrate *>(f);
-    if (!fi) continue;
-    scheme_ = fi->scheme_in_use();
-    break;
-  }
-}
+void FixTDEMTimestep::init() { scheme_ = th::scheme_in_use<FixTDEMIntegrate>(opt_, modify); }
 
 /* ---------------------------------------------------------------------- properties */
 
@@ -364,40 +351,13 @@ void FixTDEMTimestep::law_row(const std::string& model, int i, int j, th::Row& r
 
 /* ---------------------------------------------------------------------- atoms */
 
-void FixTDEMTimestep::type_minima(int mask_bits, std::vector<double>& mmin, std::vector<double>& rmin,
-                                  std::vector<double>& rhomin) {
-  const int nt = atom->ntypes;
-  const std::vector<double> loc = tdem::advice::host::local_type_minima(atom->rmass, atom->radius, atom->type,
-                                                                       atom->mask, atom->nlocal, mask_bits, nt);
-  std::vector<double> all(loc.size());
-  MPI_Allreduce(loc.data(), all.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MIN, world);
-  mmin.assign(all.begin(), all.begin() + nt + 1);
-  rmin.assign(all.begin() + nt + 1, all.begin() + 2 * (nt + 1));
-  rhomin.assign(all.begin() + 2 * (nt + 1), all.end());
-}
-
-double FixTDEMTimestep::largest_speed() {
-  const double v2 = tdem::advice::host::local_largest_speed2(atom->v, atom->mask, atom->nlocal, groupbit);
-  double all = 0.0;
-  MPI_Allreduce(&v2, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-  return std::sqrt(all);
-}
-
-void FixTDEMTimestep::largest_overlaps(std::vector<double>& xi) {
-  std::vector<double> loc;
-  tdem::advice::host::local_largest_overlaps(force->pair ? force->pair->list : nullptr, atom->x, atom->radius,
-                                             atom->type, atom->mask, groupbit, atom->ntypes, NEIGHMASK, loc);
-  xi.assign(loc.size(), 0.0);
-  MPI_Allreduce(loc.data(), xi.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MAX, world);
-}
-
 /* ---------------------------------------------------------------------- rows */
 
 void FixTDEMTimestep::build_rows(double v_setup) {
   rows_.clear();
   const int nt = atom->ntypes;
   std::vector<double> mmin, rmin, rhomin;
-  type_minima(groupbit, mmin, rmin, rhomin);
+  th::type_minima(world, atom, groupbit, mmin, rmin, rhomin);
   auto present = [&](int t) { return mmin[t] < kBig && rmin[t] < kBig; };
   auto material = [&](int t, int mt, double r, double rho) {
     bool fE, fn;
@@ -440,7 +400,7 @@ void FixTDEMTimestep::build_rows(double v_setup) {
     FixWallGran* w = dynamic_cast<FixWallGran*>(modify->fix[k]);
     if (!w) continue;
     std::vector<double> wm, wr, wrho;
-    type_minima(groupbit | w->groupbit, wm, wr, wrho);
+    th::type_minima(world, atom, groupbit | w->groupbit, wm, wr, wrho);
     const std::string model = model_of(w);
     const int wt = w->atom_type_wall();
     for (int t = 1; t <= nt; t++) {
@@ -471,56 +431,18 @@ void FixTDEMTimestep::build_rows(double v_setup) {
 
 void FixTDEMTimestep::setup(int) {
   runtime_warned_ = false;
-  double v_setup = opt_.vmax;
-  std::string vsrc = "vmax";
-  if (!opt_.vmax_given) {
-    v_setup = 2.0 * largest_speed();
-    vsrc = "2 x the largest particle speed";
-    if (!(v_setup > 0.0)) {
-      v_setup = 1.0;
-      vsrc = "no vmax given and every particle at rest: 1 (velocity units)";
-    }
-  }
-  build_rows(v_setup);
-  const ta::Policy pol = th::policy_of(opt_);
-  std::string head = std::string("fix ") + id + " tdem/timestep: scheme " + ti::info(scheme_).name + ", dt = " +
-                     str(update->dt) + ", v_max = " + str(v_setup) + " (" + vsrc + "), check " +
-                     th::to_string(opt_.check) + ", every " + std::to_string(opt_.every) + ", fraction " +
-                     str(opt_.fraction);
-  std::string out = th::table(rows_, head, pol);
-  for (const th::Row& r : rows_)
-    if (r.advised) {
-      out += "  " + r.what + ": " + ta::summary(r.a) + "\n";
-      if (r.law.find("candidates") != std::string::npos) out += "    (" + r.law + ")\n";
-    }
-  if (rows_.empty()) out += "  (no type pair or wall with a supported law in the group)\n";
-  say(out);
-  vec_[0] = INFINITY, vec_[1] = INFINITY;
-  for (const th::Row& r : rows_)
-    if (r.advised) {
-      vec_[0] = std::min(vec_[0], r.a.dt_critical);
-      vec_[1] = std::min(vec_[1], r.a.steps_per_contact);
-    }
-  vec_[2] = std::isfinite(vec_[0]) && vec_[0] > 0.0 ? update->dt / vec_[0] : 0.0;
+  const th::SetupSpeed v = th::setup_speed(opt_, opt_.vmax_given ? 0.0 : th::largest_speed(world, atom, groupbit));
+  build_rows(v.v);
+  const th::SetupReport rep = th::setup_report(rows_, opt_, scheme_, update->dt, v, where());
+  say(rep.log);
+  std::copy(rep.vec, rep.vec + 3, vec_);
   last_step_ = update->ntimestep;
-
   natoms_ = group->count(igroup);
-  watch_every_step_ = false;
-  unstable_.clear();
-  if (opt_.check == th::CheckMode::off) return;
-  std::string stop;
-  for (th::Row& r : rows_) {
-    if (!r.advised) continue;
-    const ta::Check c = ta::check(r.a, update->dt, pol);
-    if (c.verdict == ta::Verdict::stop && stop.empty()) stop = r.what + ": " + c.message;
-    if (c.verdict == ta::Verdict::stop) watch_every_step_ = true;
-    if (c.verdict != ta::Verdict::ok && !(c.verdict == ta::Verdict::stop && opt_.check == th::CheckMode::stop) &&
-        comm->me == 0)
-      error->warning(FLERR, (std::string("fix ") + id + " tdem/timestep: " + r.what + ": " + c.message).c_str());
-  }
-  if (!stop.empty() && opt_.check == th::CheckMode::stop)
-    error->all(FLERR, (std::string("fix ") + id + " tdem/timestep (check stop): " + stop).c_str());
-  unstable_ = stop;
+  watch_every_step_ = opt_.check != th::CheckMode::off && !rep.unstable.empty();
+  unstable_ = opt_.check != th::CheckMode::off ? rep.unstable : std::string();
+  if (comm->me == 0)
+    for (const std::string& w : rep.warnings) error->warning(FLERR, w.c_str());
+  if (!rep.stop.empty()) error->all(FLERR, rep.stop.c_str());
 }
 
 void FixTDEMTimestep::lost_check() {
@@ -541,27 +463,20 @@ void FixTDEMTimestep::lost_check() {
 }
 
 void FixTDEMTimestep::run_check(const char* when) {
-  const double speed = largest_speed();
-  std::vector<double> xi;
-  largest_overlaps(xi);
-  const int nt = atom->ntypes;
-  auto row_xi = [&](const th::Row& r) { return r.jtype ? xi[r.itype * (nt + 1) + r.jtype] : 0.0; };
-  const th::Now now = th::recheck(rows_, 2.0 * speed, speed, row_xi, scheme_, update->dt, th::policy_of(opt_));
-  vec_[0] = now.dt_critical;
-  vec_[1] = now.steps_per_contact;
-  vec_[2] = now.fraction;
+  const double speed = th::largest_speed(world, atom, groupbit);
+  const std::vector<double> xi =
+      th::largest_overlaps(world, atom, force->pair ? force->pair->list : nullptr, groupbit, NEIGHMASK);
+  const th::RuntimeReport rep = th::runtime_report(rows_, speed, xi, atom->ntypes, scheme_, update->dt, opt_, when,
+                                                   static_cast<long long>(update->ntimestep), where());
+  std::copy(rep.vec, rep.vec + 3, vec_);
   last_step_ = update->ntimestep;
-  if (!when || opt_.check == th::CheckMode::off || now.verdict == ta::Verdict::ok) return;
-  double xmax = 0.0;
-  for (double v : xi) xmax = std::max(xmax, v);
-  const std::string msg = std::string("fix ") + id + " tdem/timestep: " + when + " check at step " +
-                          std::to_string(static_cast<long long>(update->ntimestep)) + " (largest particle speed " +
-                          str(speed) + ", approach velocity bound " + str(2.0 * speed) + ", largest pair overlap " +
-                          str(xmax) + "): " + now.message;
-  if (now.verdict == ta::Verdict::stop && opt_.check == th::CheckMode::stop) error->all(FLERR, msg.c_str());
-  if (!runtime_warned_ && comm->me == 0) error->warning(FLERR, (msg + " (warned once per run)").c_str());
-  runtime_warned_ = true;
+  if (rep.action == th::Action::stop) error->all(FLERR, rep.message.c_str());
+  if (rep.action == th::Action::warn && !runtime_warned_ && comm->me == 0)
+    error->warning(FLERR, (rep.message + " (warned once per run)").c_str());
+  if (rep.action != th::Action::none) runtime_warned_ = true;
 }
+
+std::string FixTDEMTimestep::where() const { return std::string("fix ") + id + " tdem/timestep"; }
 
 void FixTDEMTimestep::end_of_step() {
   const bool periodic = opt_.every > 0 && update->ntimestep % opt_.every == 0;

@@ -55,10 +55,8 @@ class FixTDEMTimestep : public Fix {
   void lost_check();
 
   void build_rows(double v_setup);
-  void type_minima(int mask, std::vector<double>& mmin, std::vector<double>& rmin, std::vector<double>& rhomin);
-  double largest_speed();
-  void largest_overlaps(std::vector<double>& xi);
   void run_check(const char* when);
+  std::string where() const;
   void say(const std::string& s);
   void law_row(const std::string& model, int i, int j, tdem::advice::host::Row& r);
   // the law of a tdem normal model, from the settings and coefficients it published

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: what the clump fixes of both engines do with their atoms and ranks besides the bodies
+// (body_set.h): rows gathered from every rank, the rows that form bodies, the spheres of an
+// insertion, which rank owns a new sphere, the fix's output flags. Templated on the engine's Atom
+// and Fix, so that no engine header is needed here.
+#pragma once
+
+#include <mpi.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "fixes/clumps/body_set.h"
+#include "fixes/clumps/clump_args.h"
+
+namespace tdem {
+namespace clumps {
+
+// Rows of doubles of every rank, in rank order, on every rank (MPI_Allgatherv).
+inline std::vector<double> allgather_rows(MPI_Comm comm, const std::vector<double>& mine) {
+  int nprocs = 1;
+  MPI_Comm_size(comm, &nprocs);
+  int nme = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  int ntot = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = ntot;
+    ntot += counts[p];
+  }
+  std::vector<double> all(ntot > 0 ? ntot : 1);
+  MPI_Allgatherv(const_cast<double*>(mine.data()), nme, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, comm);
+  all.resize(ntot);
+  return all;
+}
+
+// The largest value of v[0..n) over all ranks (0 if there is none), as int64.
+template <class T>
+std::int64_t max_over_ranks(MPI_Comm comm, int n, const T* v) {
+  std::int64_t m = 0, all = 0;
+  for (int i = 0; i < n; i++) m = std::max(m, static_cast<std::int64_t>(v[i]));
+  MPI_Allreduce(&m, &all, 1, MPI_INT64_T, MPI_MAX, comm);
+  return all;
+}
+
+// The output and integration flags of a fix tdem/clump (an engine's Fix): scalar = kinetic energy,
+// vector of 9 (BodySet::vector), one array row per body (BodySet::array), global restart record.
+template <class FixT>
+void declare_clump_fix(FixT* f) {
+  f->time_integrate = 1;
+  f->restart_global = 1;
+  f->scalar_flag = 1;
+  f->extscalar = 1;
+  f->vector_flag = 1;
+  f->size_vector = 9;
+  f->extvector = 1;
+  f->array_flag = 1;
+  f->size_array_cols = BodySet::kArrayColumns;
+  f->size_array_rows = 0;
+  f->extarray = 0;
+  f->global_freq = 1;
+}
+
+// The rows of form(): the atoms of group bit `groupbit` with a molecule ID > 0 that are not clump
+// spheres yet; unmap(i, xu) gives the unwrapped position of atom i.
+template <class TagT, class MolT, class Unmap>
+std::vector<double> form_rows(const BodySet& set, int nlocal, const int* mask, int groupbit, const TagT* tag,
+                              const MolT* molecule, Unmap unmap, double* const* v, double* const* omega,
+                              const double* radius) {
+  std::vector<double> mine;
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit) || molecule[i] <= 0 || set.has_tag(tag[i])) continue;
+    double xu[3];
+    unmap(i, xu);
+    const double row[BodySet::kFormRow] = {static_cast<double>(tag[i]), static_cast<double>(molecule[i]), xu[0], xu[1],
+                                           xu[2], v[i][0], v[i][1], v[i][2], omega[i][0], omega[i][1], omega[i][2],
+                                           radius[i]};
+    mine.insert(mine.end(), row, row + BodySet::kFormRow);
+  }
+  return mine;
+}
+
+// The spheres of all ranks (centre, radius) for the overlap test of an insertion.
+inline std::vector<Sphere> all_spheres(MPI_Comm comm, int nlocal, double* const* x, const double* radius) {
+  std::vector<double> mine(4 * static_cast<std::size_t>(nlocal));
+  for (int i = 0; i < nlocal; i++) {
+    for (int k = 0; k < 3; k++) mine[4 * i + k] = x[i][k];
+    mine[4 * i + 3] = radius[i];
+  }
+  const std::vector<double> all = allgather_rows(comm, mine);
+  std::vector<Sphere> out;
+  for (std::size_t i = 0; i < all.size() / 4; i++) out.push_back({Vec3{all[4 * i], all[4 * i + 1], all[4 * i + 2]}, all[4 * i + 3]});
+  return out;
+}
+
+// Does a sphere lie in a region (match(x, y, z)) with its six extreme points? (insertion)
+template <class Match>
+bool sphere_inside(Match match, const Vec3& p, double r) {
+  if (!match(p[0], p[1], p[2])) return false;
+  for (int k = 0; k < 3; k++)
+    for (int sgn = -1; sgn <= 1; sgn += 2) {
+      Vec3 q = p;
+      q[k] += sgn * r;
+      if (!match(q[0], q[1], q[2])) return false;
+    }
+  return true;
+}
+
+// The spheres of `a.ninsert` clumps placed in a region (bounding box lo, hi; match(x, y, z) of
+// its points; delta(dx, dy, dz) the minimum image in place) without overlap with each other and
+// with the spheres of every rank (period: the box length of each periodic direction, else 0), as
+// new bodies of `set` numbered after the largest tag and molecule ID of any rank.
+template <class AtomT, class Match, class MinImage>
+std::vector<NewSphere> insert_clumps(BodySet& set, const ClumpArgs& a, MPI_Comm world, const AtomT* atom,
+                                     const double* lo, const double* hi, Match match, MinImage minimum_image,
+                                     const Vec3& period) {
+  PlacementInput in;
+  in.n = a.ninsert;
+  in.seed = static_cast<std::uint64_t>(a.insert_seed);
+  in.lo = {lo[0], lo[1], lo[2]};
+  in.hi = {hi[0], hi[1], hi[2]};
+  in.inside = [&](const Vec3& p, double r) { return sphere_inside(match, p, r); };
+  in.delta = [&](const Vec3& p, const Vec3& q) {
+    double d[3] = {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+    minimum_image(d);
+    return Vec3{d[0], d[1], d[2]};
+  };
+  in.existing = all_spheres(world, atom->nlocal, atom->x, atom->radius);
+  in.period = period;
+  return set.insert(in, Vec3{a.insert_vel[0], a.insert_vel[1], a.insert_vel[2]},
+                    max_over_ranks(world, atom->nlocal, atom->tag), max_over_ranks(world, atom->nlocal, atom->molecule),
+                    a.insert_region);
+}
+
+// Is the remapped point xw in the sub-domain [lo, hi)? top[d]: this rank holds the upper end of a
+// non-periodic box in direction d, which belongs to it.
+inline bool owns_point(const double* xw, const double* lo, const double* hi, const bool* top_closed) {
+  for (int d = 0; d < 3; d++)
+    if (!(xw[d] >= lo[d] && (xw[d] < hi[d] || (top_closed[d] && xw[d] <= hi[d])))) return false;
+  return true;
+}
+
+}  // namespace clumps
+}  // namespace tdem

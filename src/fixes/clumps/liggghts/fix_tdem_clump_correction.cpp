@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LIGGGHTS 3.8: fix tdem/clump, the multiple-contact correction (setup_correction, the
+// per-step contact tally, prepare). The bodies, the time stepping and restart are in
+// fix_tdem_clump.cpp.
+#include "fix_tdem_clump.h"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <string>
+
+#include "atom.h"
+#include "atom_vec.h"
+#include "comm.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_wall_gran.h"
+#include "force.h"
+#include "group.h"
+#include "memory.h"
+#include "modify.h"
+#include "neigh_list.h"
+#include "neighbor.h"
+#include "pair_gran.h"
+#include "primitive_wall.h"
+#include "region.h"
+#include "update.h"
+
+#include "fixes/clumps/clump_args.h"
+#include "tdem_liggghts_ids.h"
+
+using namespace LAMMPS_NS;
+using namespace FixConst;
+namespace cl = tdem::clumps;
+using cl::Vec3;
+
+namespace {
+// side ids of the contact tally: body index >= 0, free sphere -(tag + 1), wall kWallSide + fix index
+constexpr std::int64_t kWallSide = std::int64_t(1) << 40;
+}  // namespace
+
+/* ---------------------------------------------------------------------- multiple-contact correction */
+
+// The granular pair and the wall/gran fixes whose contacts are tallied. The correction acts through
+// the surface model tdem/clump (surface_model_tdem_clump.h): a pair style or wall/gran fix without
+// it is an error (its clump contacts would silently stay uncorrected).
+void FixTDEMClump::setup_correction() {
+  const std::string what = where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': ";
+  pair_gran_ = force->pair ? dynamic_cast<PairGran*>(force->pair) : nullptr;
+  if (force->pair && !pair_gran_)
+    fail(what + "pair style '" + std::string(force->pair_style) +
+         "' is not a granular pair style (pair_style gran model ... surface tdem/clump)");
+  if (pair_gran_ && !pair_gran_->contact_match("surface", tdem::liggghts::kSurfaceClumpName))
+    fail(what + "pair style '" + std::string(force->pair_style) +
+         "' has no 'surface tdem/clump'; add 'surface tdem/clump' to its contact model (pair_style gran model M "
+         "tangential T surface tdem/clump), through which the correction acts");
+  walls_.clear();
+  wall_sides_.clear();
+  for (int m = 0; m < modify->nfix; m++) {
+    Fix* f = modify->fix[m];
+    if (std::strncmp(f->style, "wall/gran", 9) != 0) continue;
+    FixWallGran* w = static_cast<FixWallGran*>(f);
+    const void* owner = static_cast<LIGGGHTS::IContactHistorySetup*>(w);
+    if (!w->contact_match("surface", tdem::liggghts::kSurfaceClumpName))
+      fail(what + "fix " + std::string(f->id) + " (" + std::string(f->style) +
+           ") has no 'surface tdem/clump'; add 'surface tdem/clump' to its contact model (fix ID group wall/gran "
+           "model M tangential T surface tdem/clump ...), through which the correction acts");
+    if (w->is_mesh_wall()) {
+      if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share)
+        fail(what + "fix " + std::string(f->id) + " is a mesh wall; count and overlap support primitive walls only "
+                                                    "(allowed with meshes: none, local_mass)");
+      continue;
+    }
+    walls_.push_back(w);
+    wall_sides_.push_back({owner, kWallSide + m});
+  }
+  // overlaps are at most a sphere diameter (the tally's fixed point resolves 2^-80 of it)
+  double dmax = 0.0;
+  for (const auto& s : bodies_.tmpl().body) dmax = std::max(dmax, 2.0 * s.r);
+  for (int i = 0; i < atom->nlocal; i++) dmax = std::max(dmax, 2.0 * atom->radius[i]);
+  double all = dmax;
+  MPI_Allreduce(&dmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  tally_.set_length_scale(all > 0.0 ? all : 1.0);
+}
+
+// Every touching contact with a body of this fix on at least one side, per pair of sides, global
+// over the ranks (contact_tally.h). Same touching tests as the pair loop (rsq < radsum^2) and the
+// primitive wall loop (resolveContact <= 0).
+void FixTDEMClump::build_tally() {
+  tally_.clear();
+  const int nlocal = atom->nlocal;
+  double** x = atom->x;
+  const double* radius = atom->radius;
+  const int* tag = atom->tag;
+  const int* bodyidx = bodies_.body_index();
+  auto side = [&](int a) -> std::int64_t {
+    return bodyidx[a] >= 0 ? std::int64_t(bodyidx[a]) : -(std::int64_t(tag[a]) + 1);
+  };
+  if (pair_gran_ && pair_gran_->list) {
+    NeighList* list = pair_gran_->list;
+    const bool newton = force->newton_pair != 0;
+    for (int ii = 0; ii < list->inum; ii++) {
+      const int i = list->ilist[ii];
+      const int* jlist = list->firstneigh[i];
+      const int jnum = list->numneigh[i];
+      for (int jj = 0; jj < jnum; jj++) {
+        const int j = jlist[jj] & NEIGHMASK;
+        if (bodyidx[i] < 0 && bodyidx[j] < 0) continue;
+        const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
+        const double rsq = dx * dx + dy * dy + dz * dz;
+        const double radsum = radius[i] + radius[j];
+        if (!(rsq < radsum * radsum)) continue;
+        const std::int64_t a = side(i), b = side(j);
+        if (a == b) continue;
+        // newton off: a pair with a ghost partner is in the lists of both owners' ranks (or twice
+        // on one rank across a periodic boundary): counted where tag[i] <= tag[j] (equal: two
+        // images of one sphere, two contacts); the other copy only makes the pair known here
+        tally_.add(a, b, radsum - std::sqrt(rsq), newton || j < nlocal || tag[i] <= tag[j]);
+      }
+    }
+  }
+  const int* mask = atom->mask;
+  for (std::size_t w = 0; w < walls_.size(); w++) {
+    PrimitiveWall* pw = walls_[w]->primitiveWall();
+    if (!pw) continue;
+    const int bit = walls_[w]->groupbit;
+    for (int i = 0; i < nlocal; i++) {
+      if (bodyidx[i] < 0 || !(mask[i] & bit)) continue;
+      double delta[3];
+      const double d = pw->resolveContact(x[i], radius[i], delta);
+      if (d <= 0.0) tally_.add(bodyidx[i], wall_sides_[w].second, -d);
+    }
+  }
+  cl::merge_over_ranks(tally_, world, exchange_);
+}
+
+// 1/M + (r x n).I^-1 (r x n) of the body of atom a (r: sphere centre - com; the contact point lies
+// on the normal through the centre, so r x n is that of the contact point), 1/m of a free sphere.
+double FixTDEMClump::inverse_side_mass(int a, const double* n) const {
+  const int b = bodies_.body_index()[a];
+  return b < 0 ? 1.0 / atom->rmass[a] : bodies_.inverse_side_mass(b, bodies_.sphere_index()[a], n);
+}
+
+double FixTDEMClump::prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const {
+  const int i = sidata.i;
+  const int* bodyidx = bodies_.body_index();
+  const int bi = bodyidx[i];
+  std::int64_t a, b;
+  if (sidata.is_wall) {
+    if (bi < 0) return 1.0;
+    if (correction_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / inverse_side_mass(i, sidata.en);
+      return 1.0;
+    }
+    a = bi;
+    b = -1;
+    for (const auto& ws : wall_sides_)
+      if (ws.first == owner) b = ws.second;
+    if (b < 0) return 1.0;
+  } else {
+    const int j = sidata.j;
+    const int bj = bodyidx[j];
+    if (bi < 0 && bj < 0) return 1.0;
+    if (correction_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / (inverse_side_mass(i, sidata.en) + inverse_side_mass(j, sidata.en));
+      return 1.0;
+    }
+    a = bi >= 0 ? std::int64_t(bi) : -(std::int64_t(atom->tag[i]) + 1);
+    b = bj >= 0 ? std::int64_t(bj) : -(std::int64_t(atom->tag[j]) + 1);
+  }
+  return tally_.pair_factor(correction_, tally_.find(a, b), sidata.deltan);
+}
