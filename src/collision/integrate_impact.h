@@ -537,15 +537,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
   const double ke1 = 0.5 * m * (y.v()[0] * y.v()[0] + y.v()[1] * y.v()[1] + y.v()[2] * y.v()[2]) +
                      0.5 * I * (y.w()[0] * y.w()[0] + y.w()[1] * y.w()[1] + y.w()[2] * y.w()[2]);
   r.dissipated_energy = ke0 - ke1;
-  r.e = r.vn / r.vn0;
-  r.beta = r.vs0 != 0.0 ? -r.vs / r.vs0 : NAN;
-  r.e_t = r.vt0 != 0.0 ? r.vt / r.vt0 : NAN;
-  r.rebound_angle_com = std::atan2(r.vt, r.vn);
-  r.rebound_angle_contact = std::atan2(r.vs, r.vn);
-  if (r.mu > 0.0) {
-    r.slip_ratio_in = r.vs0 / (r.mu * r.vn0);
-    r.slip_ratio_out = r.vs / (r.mu * r.vn0);
-  }
+  set_ratios(r);
   return r;
 }
 

@@ -190,6 +190,22 @@ struct ObliqueResult {
   std::vector<ObliqueSample> samples;
 };
 
+// The ratios of a result whose velocities before (vn0, vt0, vs0) and after (vn, vt, vs) are set:
+// e, beta, e_t, the rebound angles, the slip ratios (mu > 0) and psi = kappa times them.
+inline void set_ratios(ObliqueResult& r) {
+  r.e = r.vn / r.vn0;
+  r.beta = r.vs0 != 0.0 ? -r.vs / r.vs0 : NAN;
+  r.e_t = r.vt0 != 0.0 ? r.vt / r.vt0 : NAN;
+  r.rebound_angle_com = std::atan2(r.vt, r.vn);
+  r.rebound_angle_contact = std::atan2(r.vs, r.vn);
+  if (r.mu > 0.0) {
+    r.slip_ratio_in = r.vs0 / (r.mu * r.vn0);
+    r.slip_ratio_out = r.vs / (r.mu * r.vn0);
+    r.psi1 = r.kappa * r.slip_ratio_in;
+    r.psi2 = r.kappa * r.slip_ratio_out;
+  }
+}
+
 inline void validate(const ObliqueBodies& b) {
   checks::positive("mass m1", b.m1);
   checks::positive("radius R1", b.R1);
@@ -456,17 +472,7 @@ ObliqueResult integrate_oblique(NormalLaw& normal, TangentialLaw& tang, const Ob
   r.vs = r.vt + R1 * r.omega1 + (wall ? 0.0 : R2 * r.omega2);
   r.residual_overlap = std::max(xi, xi_start);
   r.dissipated_energy = ke0 - kinetic_energy(s);
-  r.e = r.vn / r.vn0;
-  r.beta = r.vs0 != 0.0 ? -r.vs / r.vs0 : NAN;
-  r.e_t = r.vt0 != 0.0 ? r.vt / r.vt0 : NAN;
-  r.rebound_angle_com = std::atan2(r.vt, r.vn);
-  r.rebound_angle_contact = std::atan2(r.vs, r.vn);
-  if (r.mu > 0.0) {
-    r.slip_ratio_in = r.vs0 / (r.mu * r.vn0);
-    r.slip_ratio_out = r.vs / (r.mu * r.vn0);
-    r.psi1 = r.kappa * r.slip_ratio_in;
-    r.psi2 = r.kappa * r.slip_ratio_out;
-  }
+  set_ratios(r);
   return r;
 }
 

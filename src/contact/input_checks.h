@@ -12,9 +12,10 @@
 namespace tdem {
 namespace checks {
 
-inline std::string number(double v) {
+// A number in messages, with `digits` significant digits (%.9g by default).
+inline std::string number(double v, int digits = 9) {
   char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
 }
 

@@ -129,11 +129,7 @@ inline std::string count_message(const Description& d, int n) {
 }
 
 // The number in messages: 10 significant digits, as the LAMMPS adapters print.
-inline std::string number_text(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", v);
-  return buf;
-}
+inline std::string number_text(double v) { return checks::number(v, 10); }
 
 // The name of value k in messages: "normal thornton NU (Poisson ratio)".
 inline std::string value_name(const Description& d, int k) {

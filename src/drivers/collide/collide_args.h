@@ -3,6 +3,7 @@
 #pragma once
 
 #include "collide_common.h"
+#include "contact/input_checks.h"
 #include "collide_help.h"
 
 namespace {
@@ -11,11 +12,7 @@ struct BadInput : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-std::string num_str(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
+std::string num_str(double v) { return checks::number(v); }
 
 class Args {
  public:
@@ -197,6 +194,12 @@ ContactEnd read_end(Args& a, ContactEnd dflt) {
   if (!a.has("--end")) return dflt;
   return a.choice("--end", {"zero_overlap", "zero_force"}) == "zero_force" ? ContactEnd::zero_force
                                                                            : ContactEnd::zero_overlap;
+}
+
+// A law that ends at zero force only: --end, if given, must say so.
+void only_zero_force_end(Args& a, const std::string& law) {
+  if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
+    throw BadInput("option --end = zero_overlap is not allowed for --law " + law + " (allowed: zero_force)");
 }
 
 // E* from --Estar or --E/--nu [--E2/--nu2]; for hertz also --k or --tc (returns k~ directly).

@@ -408,4 +408,39 @@ void run_oblique(Run& run, Law& law, const collision::Options& ho) {
   }
 }
 
+// The values of an oblique impact in the JSON output, in order: name, member, in degrees, only
+// for two spheres.
+struct ObliqueField {
+  const char* name;
+  double collision::ObliqueResult::*m;
+  bool angle = false, pair_only = false;
+};
+using OR = collision::ObliqueResult;
+const ObliqueField kObliqueFields[] = {
+    {"vn0", &OR::vn0},
+    {"vt0", &OR::vt0},
+    {"vs0", &OR::vs0},
+    {"spin", &OR::omega1_0},
+    {"spin2", &OR::omega2_0, false, true},
+    {"impact_angle_contact", &OR::impact_angle_contact, true},
+    {"m_t", &OR::m_t},
+    {"beta", &OR::beta},
+    {"e_t", &OR::e_t},
+    {"vn", &OR::vn},
+    {"vt", &OR::vt},
+    {"vs", &OR::vs},
+    {"spin_after", &OR::omega1},
+    {"spin2_after", &OR::omega2, false, true},
+    {"rebound_angle_com", &OR::rebound_angle_com, true},
+    {"rebound_angle_contact", &OR::rebound_angle_contact, true},
+    {"mu", &OR::mu},
+    {"kappa", &OR::kappa},
+    {"slip_ratio_in", &OR::slip_ratio_in},
+    {"slip_ratio_out", &OR::slip_ratio_out},
+    {"psi1", &OR::psi1},
+    {"psi2", &OR::psi2},
+    {"max_tangential_force", &OR::max_tangential_force},
+    {"normal_turn", &OR::normal_turn, true, true},
+};
+
 }  // namespace

@@ -216,8 +216,7 @@ Run run(Args& a) {
     go(run, law, b, v0, opt);
   } else if (run.law == "walton_braun") {
     collision::WaltonBraunLaw law;
-    if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
-      throw BadInput("option --end = zero_overlap is not allowed for --law walton_braun (allowed: zero_force)");
+    only_zero_force_end(a, "walton_braun");
     if (a.has("--e")) {
       a.forbid("--kul", "together with --e");
       a.forbid("--s", "together with --e");
@@ -251,8 +250,7 @@ Run run(Args& a) {
     go(run, law, b, v0, opt);
   } else if (run.law == "thornton") {
     collision::ThorntonLaw law;
-    if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
-      throw BadInput("option --end = zero_overlap is not allowed for --law thornton (allowed: zero_force)");
+    only_zero_force_end(a, "thornton");
     law.p.e_star = read_modulus(a);
     const double reff = need_reff(b, "for --law thornton");
     int n_yield = a.has("--py") + a.has("--vy") + a.has("--e");
@@ -273,8 +271,7 @@ Run run(Args& a) {
     go(run, law, b, v0, opt);
   } else if (run.law == "power_law") {
     collision::PowerLawLaw law;
-    if (a.has("--end") && read_end(a, ContactEnd::zero_force) != ContactEnd::zero_force)
-      throw BadInput("option --end = zero_overlap is not allowed for --law power_law (allowed: zero_force)");
+    only_zero_force_end(a, "power_law");
     a.require("--al", "for --law power_law");
     a.require("--p", "for --law power_law");
     law.p.a_load = a.positive("--al");
@@ -390,31 +387,9 @@ void write_oblique(Json& j, const Oblique& o) {
   j.str("lever_arm", collision::to_string(o.opt.lever));
   j.num("speed", o.speed);
   j.num("angle", o.angle_deg);
-  j.num("vn0", x.vn0);
-  j.num("vt0", x.vt0);
-  j.num("vs0", x.vs0);
-  j.num("spin", x.omega1_0);
-  if (!wall) j.num("spin2", x.omega2_0);
-  j.num("impact_angle_contact", x.impact_angle_contact * deg);
-  j.num("m_t", x.m_t);
   // NaN (null) where the impact did not end or the ratio is undefined (no tangential velocity)
-  j.num("beta", x.beta);
-  j.num("e_t", x.e_t);
-  j.num("vn", x.vn);
-  j.num("vt", x.vt);
-  j.num("vs", x.vs);
-  j.num("spin_after", x.omega1);
-  if (!wall) j.num("spin2_after", x.omega2);
-  j.num("rebound_angle_com", x.rebound_angle_com * deg);
-  j.num("rebound_angle_contact", x.rebound_angle_contact * deg);
-  j.num("mu", x.mu);
-  j.num("kappa", x.kappa);
-  j.num("slip_ratio_in", x.slip_ratio_in);
-  j.num("slip_ratio_out", x.slip_ratio_out);
-  j.num("psi1", x.psi1);
-  j.num("psi2", x.psi2);
-  j.num("max_tangential_force", x.max_tangential_force);
-  if (!wall) j.num("normal_turn", x.normal_turn * deg);
+  for (const ObliqueField& f : kObliqueFields)
+    if (!(f.pair_only && wall)) j.num(f.name, x.*f.m * (f.angle ? deg : 1.0));
   j.boolean("sliding_at_start", x.sliding_at_start);
   std::string sw = "[";
   for (size_t i = 0; i < x.switches.size(); ++i) {

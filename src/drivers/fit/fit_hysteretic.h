@@ -77,17 +77,10 @@ class WaltonBraunFit : public FitLaw {
     return r;
   }
   HostLines hosts(const std::vector<double>& x) const override {
-    HostLines h;
     const auto p = par(x);
-    LiggghtsSpec s;
-    s.model = "tdem/walton_braun";
-    s.pair_props = {{"loadingStiffness", p.k_load}, {"unloadingStiffness", p.k_unload},
-                    {"unloadingStiffnessSlope", p.slope}};
-    liggghts_lines(c_, s, h);
-    const std::string n = "normal walton_braun " + num(p.k_load) + " " + num(p.k_unload) + " " + num(p.slope);
-    lammps_lines(c_, n, n, false, h);
-    return h;
+    return unit_hosts<walton_braun::Law>(c_, {p.k_load, p.k_unload, p.slope});
   }
+
 
  private:
   bool fd_;
@@ -151,17 +144,8 @@ class ThorntonFit : public FitLaw {
             {"v_y", "m/s", thornton::yield_velocity(p, c_.reff, c_.meff), false, "yield velocity at m*, R*"},
             {"E*", "Pa", c_.estar, false, "from E, nu, E2, nu2"}};
   }
-  HostLines hosts(const std::vector<double>& x) const override {
-    HostLines h;
-    LiggghtsSpec s;
-    s.model = "tdem/thornton";
-    s.material = true;
-    s.pair_props = {{"yieldPressure", x[0]}};
-    liggghts_lines(c_, s, h);
-    lammps_lines(c_, "normal thornton " + lammps_materials(c_) + " " + num(x[0]),
-                 "normal thornton " + num(c_.data.E) + " " + num(c_.data.nu) + " " + num(x[0]), false, h);
-    return h;
-  }
+  HostLines hosts(const std::vector<double>& x) const override { return unit_hosts<thornton::Law>(c_, {x[0]}); }
+
 };
 
 // ------------------------------------------------------------------ power law
@@ -207,17 +191,10 @@ class PowerLawFit : public FitLaw {
             {"p", "-", p.p, false, ""}};
   }
   HostLines hosts(const std::vector<double>& x) const override {
-    HostLines h;
     const auto p = par(x);
-    LiggghtsSpec s;
-    s.model = "tdem/power_law";
-    s.pair_props = {{"loadingCoefficient", p.a_load}, {"loadingExponent", p.p},
-                    {"unloadingCoefficient", p.a_unload}, {"unloadingExponentIncrement", p.q}};
-    liggghts_lines(c_, s, h);
-    const std::string n = "normal power_law " + num(p.a_load) + " " + num(p.p) + " " + num(p.a_unload) + " " + num(p.q);
-    lammps_lines(c_, n, n, false, h);
-    return h;
+    return unit_hosts<power_law::Law>(c_, {p.a_load, p.p, p.a_unload, p.q});
   }
+
 };
 
 }  // namespace fitting

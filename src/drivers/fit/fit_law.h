@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "collision/head_on.h"
+#include "contact/laws.h"
+#include "contact/input_checks.h"
 #include "impact_data.h"
 
 namespace tdem {
@@ -34,11 +36,7 @@ struct Context {
   fits::Range range;             // clamp of the extended laws (defaults)
 };
 
-inline std::string num(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
+inline std::string num(double v) { return checks::number(v); }
 
 struct Param {
   std::string name, unit;
@@ -158,6 +156,30 @@ inline void lammps_lines(const Context& c, const std::string& normal_fit, const 
 inline std::string lammps_materials(const Context& c) {
   if (c.data.E2 == c.data.E && c.data.nu2 == c.data.nu) return num(c.data.E) + " " + num(c.data.nu);
   return num(c.data.E) + " " + num(c.data.nu) + " " + num(host_E2(c)) + " " + num(c.data.nu2);
+}
+
+// The input lines of a normal law that is a unit (src/contact/law_unit.h) with its own values
+// (after the materials, which come from the data): LIGGGHTS `model tdem/NAME` with one
+// peratomtypepair property per value (the unit's property names), LAMMPS `normal NAME [E NU [E2
+// NU2]] values`.
+template <class U>
+HostLines unit_hosts(const Context& c, const std::vector<double>& own) {
+  HostLines h;
+  const law::Description& d = U::description;
+  LiggghtsSpec s;
+  s.model = std::string("tdem/") + d.name;
+  s.material = d.materials;
+  for (int k = 0; k < d.count && k < static_cast<int>(own.size()); ++k) s.pair_props.push_back({U::properties[k], own[k]});
+  liggghts_lines(c, s, h);
+  std::string values;
+  for (double v : own) values += " " + num(v);
+  const std::string n = std::string("normal ") + d.name;
+  if (d.materials)
+    lammps_lines(c, n + " " + lammps_materials(c) + values, n + " " + num(c.data.E) + " " + num(c.data.nu) + values,
+                 false, h);
+  else
+    lammps_lines(c, n + values, n + values, false, h);
+  return h;
 }
 
 inline std::string limit_force_setting(const Context& c) {

@@ -30,6 +30,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "contact/input_checks.h"
 #include "contact/multi_contact/multi_contact.h"
 #include "fixes/clumps/host_bodies.h"
 #include "fixes/clumps/rigid_body.h"
@@ -39,11 +40,7 @@ namespace tdem {
 namespace clumps {
 
 // %.10g of x (messages).
-inline std::string num10(double x) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.10g", x);
-  return buf;
-}
+inline std::string num10(double x) { return checks::number(x, 10); }
 
 // One sphere of a clump inserted by BodySet::insert: the host creates it where it is owned.
 struct NewSphere {
@@ -73,6 +70,7 @@ class BodySet {
   void keep_local_mass(bool on) { local_mass_ = on; }
 
   const Template& tmpl() const { return tmpl_; }
+  const std::string& where() const { return where_; }
   const Body& body() const { return body_; }
   Rotation scheme() const { return scheme_; }
   int nsph() const { return nsph_; }

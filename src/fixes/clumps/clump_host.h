@@ -7,7 +7,13 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <cstdint>
+#include <cstdio>
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include "fixes/clumps/body_set.h"
@@ -107,14 +113,21 @@ bool sphere_inside(Match match, const Vec3& p, double r) {
   return true;
 }
 
-// The spheres of `a.ninsert` clumps placed in a region (bounding box lo, hi; match(x, y, z) of
-// its points; delta(dx, dy, dz) the minimum image in place) without overlap with each other and
-// with the spheres of every rank (period: the box length of each periodic direction, else 0), as
-// new bodies of `set` numbered after the largest tag and molecule ID of any rank.
-template <class AtomT, class Match, class MinImage>
+// The spheres of `a.ninsert` clumps placed in an engine's Region (its bounding box and match())
+// without overlap with each other and with the spheres of every rank (minimum_image(d) the
+// minimum image in place, period: the box length of each periodic direction, else 0), as new
+// bodies of `set` numbered after the largest tag and molecule ID of any rank. Throws if the
+// region has no bounding box.
+template <class AtomT, class RegionT, class MinImage>
 std::vector<NewSphere> insert_clumps(BodySet& set, const ClumpArgs& a, MPI_Comm world, const AtomT* atom,
-                                     const double* lo, const double* hi, Match match, MinImage minimum_image,
-                                     const Vec3& period) {
+                                     RegionT* region, MinImage minimum_image, const Vec3& period) {
+  if (!region->bboxflag)
+    throw std::runtime_error(set.where() + ": insert region '" + a.insert_region +
+                             "' has no bounding box (use a bounded region)");
+  region->prematch();
+  const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
+  const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
+  auto match = [&](double x, double y, double z) { return region->match(x, y, z) != 0; };
   PlacementInput in;
   in.n = a.ninsert;
   in.seed = static_cast<std::uint64_t>(a.insert_seed);
@@ -133,12 +146,92 @@ std::vector<NewSphere> insert_clumps(BodySet& set, const ClumpArgs& a, MPI_Comm 
                     a.insert_region);
 }
 
+// The box length of each periodic direction of an engine's Domain, else 0.
+template <class DomainT>
+Vec3 periods(const DomainT* d) {
+  return Vec3{d->xperiodic ? d->xprd : 0.0, d->yperiodic ? d->yprd : 0.0, d->zperiodic ? d->zprd : 0.0};
+}
+
+// A clump fix's global restart record: magic, body count, spheres per body, the fix's own flags,
+// then the bodies (BodySet::pack), written as the engines read it back (its size in bytes, then
+// the doubles). Rank 0 writes.
+inline void write_restart_record(std::FILE* fp, const BodySet& set, double magic, std::initializer_list<double> flags,
+                                 bool with_force) {
+  std::vector<double> buf = {magic, static_cast<double>(set.size()), static_cast<double>(set.nsph())};
+  buf.insert(buf.end(), flags);
+  set.pack(buf, with_force);
+  const int size = static_cast<int>(buf.size() * sizeof(double));
+  std::fwrite(&size, sizeof(int), 1, fp);
+  std::fwrite(buf.data(), sizeof(double), buf.size(), fp);
+}
+
+// Reads a record of write_restart_record() with nflags flags into set and flags; throws
+// `not_ours` if its magic differs.
+inline void read_restart_record(const char* raw, BodySet& set, double magic, double* flags, int nflags,
+                                bool with_force, const std::string& not_ours) {
+  const double* buf = reinterpret_cast<const double*>(raw);
+  if (buf[0] != magic) throw std::runtime_error(not_ours);
+  std::copy(buf + 3, buf + 3 + nflags, flags);
+  set.unpack(buf + 3 + nflags, static_cast<int>(buf[1]), static_cast<int>(buf[2]), with_force);
+}
+
 // Is the remapped point xw in the sub-domain [lo, hi)? top[d]: this rank holds the upper end of a
 // non-periodic box in direction d, which belongs to it.
 inline bool owns_point(const double* xw, const double* lo, const double* hi, const bool* top_closed) {
   for (int d = 0; d < 3; d++)
     if (!(xw[d] >= lo[d] && (xw[d] < hi[d] || (top_closed[d] && xw[d] <= hi[d])))) return false;
   return true;
+}
+
+// The engine's packing of the three periodic image counts into one integer (IMGMASK, IMGBITS,
+// IMG2BITS, IMGMAX of its lmptype.h).
+struct ImageBits {
+  long long mask;
+  int bits, bits2, max;
+};
+
+// Owned spheres of an engine's Atom from their bodies: x (if positions, with the image flags), v,
+// omega (BodySet::set_spheres); prd the box lengths.
+template <class AtomT>
+void set_spheres(const BodySet& set, AtomT* atom, const double* prd, const ImageBits& ib, bool positions) {
+  const auto* image = atom->image;
+  set.set_spheres(
+      atom->nlocal, atom->x, atom->v, atom->omega, prd,
+      [&](int i, int* box) {
+        const long long img = static_cast<long long>(image[i]);
+        box[0] = static_cast<int>(img & ib.mask) - ib.max;
+        box[1] = static_cast<int>(img >> ib.bits & ib.mask) - ib.max;
+        box[2] = static_cast<int>(img >> ib.bits2) - ib.max;
+      },
+      positions);
+}
+
+// Creates the spheres of an insertion that this rank owns: create(s) makes the atom of sphere s
+// if this rank owns its place (remapped into the box, with its image flags) and returns its index,
+// else -1; the tag, molecule, group, radius, mass share, velocity and spin are set here. Returns
+// the number of spheres created on all ranks.
+template <class AtomT, class Create>
+std::int64_t create_spheres(const BodySet& set, AtomT* atom, const std::vector<NewSphere>& spheres, int groupbit,
+                            MPI_Comm world, Create create) {
+  using Tag = std::remove_reference_t<decltype(atom->tag[0])>;
+  using Mol = std::remove_reference_t<decltype(atom->molecule[0])>;
+  std::int64_t mine = 0, all = 0;
+  for (const NewSphere& s : spheres) {
+    const int n = create(s);
+    if (n < 0) continue;
+    atom->tag[n] = static_cast<Tag>(s.tag);
+    atom->molecule[n] = static_cast<Mol>(s.mol);
+    atom->mask[n] |= groupbit;
+    atom->radius[n] = set.tmpl().body[s.sphere].r;
+    atom->rmass[n] = set.sphere_mass()[s.sphere];
+    for (int d = 0; d < 3; d++) {
+      atom->v[n][d] = s.v[d];
+      atom->omega[n][d] = 0.0;
+    }
+    mine++;
+  }
+  MPI_Allreduce(&mine, &all, 1, MPI_INT64_T, MPI_SUM, world);
+  return all;
 }
 
 }  // namespace clumps

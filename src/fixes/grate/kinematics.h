@@ -31,6 +31,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "contact/input_checks.h"
+
 namespace tdem {
 namespace grate {
 
@@ -48,10 +50,8 @@ inline const char* profile_name(Profile p) {
 // Error for a bad keyword value: names the keyword, the value and the allowed values.
 [[noreturn]] inline void bad_value(const std::string& context, const std::string& keyword, double v,
                                    const std::string& allowed) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  throw std::invalid_argument(context + ": keyword '" + keyword + "' = " + buf + " is outside the allowed range " +
-                              allowed);
+  throw std::invalid_argument(context + ": keyword '" + keyword + "' = " + checks::number(v) +
+                              " is outside the allowed range " + allowed);
 }
 
 inline Profile parse_profile(const std::string& s) {

@@ -358,6 +358,38 @@ inline RuntimeReport runtime_report(std::vector<Row>& rows, double speed, const 
   return rep;
 }
 
+// The state of a fix tdem/timestep, the same in both engines: its options, the scheme advised on,
+// the rows (built by the host from its laws), the global vector and the once-per-run warning.
+struct FixState {
+  Options opt;
+  integrators::Scheme scheme = integrators::Scheme::velocity_verlet;
+  std::vector<Row> rows;
+  double vec[3] = {0.0, 0.0, 0.0};  // dt_c, steps per contact, dt / dt_c (intensive)
+  bool runtime_warned = false;
+  long long last_step = -1;  // step of the values in vec
+
+  // after the rows are built at set-up
+  SetupReport setup(double dt, const SetupSpeed& v, long long step, const std::string& fix) {
+    SetupReport rep = setup_report(rows, opt, scheme, dt, v, fix);
+    std::copy(rep.vec, rep.vec + 3, vec);
+    last_step = step;
+    runtime_warned = false;
+    return rep;
+  }
+  // the run-time re-check; a warning only once per run (action none after the first)
+  RuntimeReport recheck(double speed, const std::vector<double>& xi, int ntypes, double dt, const char* when,
+                        long long step, const std::string& fix) {
+    RuntimeReport rep = runtime_report(rows, speed, xi, ntypes, scheme, dt, opt, when, step, fix);
+    std::copy(rep.vec, rep.vec + 3, vec);
+    last_step = step;
+    if (rep.action != Action::none) {
+      if (rep.action == Action::warn && runtime_warned) rep.action = Action::none;
+      runtime_warned = true;
+    }
+    return rep;
+  }
+};
+
 // ---------------------------------------------------------------- run-time scans (both engines)
 // The smallest mass, radius and density per atom type of the local atoms with all of `bits` set
 // in their mask (3 (ntypes + 1) entries: masses, radii, densities, each indexed by type; a type
@@ -377,6 +409,33 @@ inline std::vector<double> local_type_minima(const double* rmass, const double* 
   }
   return loc;
 }
+
+// The smallest mass, radius and density per atom type over all ranks (type_minima below).
+struct TypeMinima {
+  std::vector<double> m, r, rho;
+  // Does type t have atoms of the group?
+  bool present(int t) const {
+    return m[t] < std::numeric_limits<double>::max() && r[t] < std::numeric_limits<double>::max();
+  }
+  // The row of type pair i, j (m* and R* of their smallest spheres).
+  Row pair_row(int i, int j) const {
+    Row w;
+    w.what = "pair " + std::to_string(i) + " " + std::to_string(j);
+    w.itype = i, w.jtype = j;
+    w.meff = m[i] * m[j] / (m[i] + m[j]);
+    w.reff = r[i] * r[j] / (r[i] + r[j]);
+    return w;
+  }
+  // The row of type t against wall `wall` (a flat wall: the sphere's mass and radius).
+  Row wall_row(const std::string& wall, int t) const {
+    Row w;
+    w.what = "wall " + wall + " type " + std::to_string(t);
+    w.itype = t, w.jtype = 0;
+    w.meff = m[t];
+    w.reff = r[t];
+    return w;
+  }
+};
 
 // The largest squared speed of the local atoms of the group (reduce with MPI_MAX, then sqrt).
 inline double local_largest_speed2(double* const* v, const int* mask, int nlocal, int groupbit) {
@@ -415,16 +474,17 @@ void local_largest_overlaps(const List* list, double* const* x, const double* ra
 // ntypes): the smallest mass, radius and density per type of the atoms with all of `bits` set, the
 // largest speed of the group, the largest overlap per type pair of a neighbour list's pairs.
 template <class AtomT>
-void type_minima(MPI_Comm world, const AtomT* atom, int bits, std::vector<double>& mmin, std::vector<double>& rmin,
-                 std::vector<double>& rhomin) {
+TypeMinima type_minima(MPI_Comm world, const AtomT* atom, int bits) {
   const int nt = atom->ntypes;
   const std::vector<double> loc =
       local_type_minima(atom->rmass, atom->radius, atom->type, atom->mask, atom->nlocal, bits, nt);
   std::vector<double> all(loc.size());
   MPI_Allreduce(loc.data(), all.data(), static_cast<int>(loc.size()), MPI_DOUBLE, MPI_MIN, world);
-  mmin.assign(all.begin(), all.begin() + nt + 1);
-  rmin.assign(all.begin() + nt + 1, all.begin() + 2 * (nt + 1));
-  rhomin.assign(all.begin() + 2 * (nt + 1), all.end());
+  TypeMinima tm;
+  tm.m.assign(all.begin(), all.begin() + nt + 1);
+  tm.r.assign(all.begin() + nt + 1, all.begin() + 2 * (nt + 1));
+  tm.rho.assign(all.begin() + 2 * (nt + 1), all.end());
+  return tm;
 }
 template <class AtomT>
 double largest_speed(MPI_Comm world, const AtomT* atom, int groupbit) {

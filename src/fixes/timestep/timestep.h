@@ -168,6 +168,13 @@ double integrated_contact_time(Law& law, double meff, double reff, double v, dou
   return r.contact_time;
 }
 
+// The advice's contact time from the integrated head-on collision at its impact velocity.
+template <class Law>
+void set_integrated_contact_time(Advice& a, Law& law, const Input& in) {
+  a.contact_time = integrated_contact_time(law, in.meff, in.reff, in.v_max);
+  a.contact_time_source = "integrated (head_on.h, RK4)";
+}
+
 }  // namespace detail
 
 // Fills dt, steps_per_contact, fraction_of_critical, dt_advised (default policy), T_R.
@@ -240,8 +247,7 @@ inline Advice for_hertz(hertz::Damping d, ContactEnd end, const hertz::Params<do
     law.damping = d;
     law.p = p;
     law.end_mode = end;
-    a.contact_time = detail::integrated_contact_time(law, in.meff, in.reff, in.v_max);
-    a.contact_time_source = "integrated (head_on.h, RK4)";
+    detail::set_integrated_contact_time(a, law, in);
   }
   finish(a, in);
   return a;
@@ -263,8 +269,7 @@ inline Advice for_law(const typename U::Params& p, const Input& in) {
   if (std::isnan(a.contact_time)) {
     collision::UnitLaw<U> law;
     law.p = p;
-    a.contact_time = detail::integrated_contact_time(law, in.meff, in.reff, in.v_max);
-    a.contact_time_source = "integrated (head_on.h, RK4)";
+    detail::set_integrated_contact_time(a, law, in);
   }
   a.velocity_at_critical = in.v_max;
   finish(a, in);
@@ -298,8 +303,7 @@ inline Advice for_continuous_potential(ContactEnd end, const continuous_potentia
   const double k = (p.n + 1.0) * p.n * p.eps * std::pow(p.d / x_min, p.n) / (x_min * x_min);
   detail::stability(a, k, p.gamma, in.meff, in.scheme);
   a.max_overlap = p.d - x_min;
-  a.contact_time = detail::integrated_contact_time(law, in.meff, in.reff, in.v_max);
-  a.contact_time_source = "integrated (head_on.h, RK4)";
+  detail::set_integrated_contact_time(a, law, in);
   a.velocity_at_critical = in.v_max;
   finish(a, in);
   return a;
@@ -371,8 +375,7 @@ inline Advice for_extended_hertz(ContactEnd end, const extended::HertzParams& p,
   collision::ExtendedHertzLaw law;
   law.p = p;
   law.end_mode = end;
-  a.contact_time = detail::integrated_contact_time(law, in.meff, in.reff, in.v_max);
-  a.contact_time_source = "integrated (head_on.h, RK4)";
+  detail::set_integrated_contact_time(a, law, in);
   finish(a, in);
   return a;
 }

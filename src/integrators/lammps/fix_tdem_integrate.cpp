@@ -2,6 +2,8 @@
 // tdem for LAMMPS: fix tdem/integrate (see fix_tdem_integrate.h and docs/lammps.md).
 
 #include "fix_tdem_integrate.h"
+
+#include "contact_host.h"
 #include "integrators/fix_args.h"
 
 #include "atom.h"
@@ -106,10 +108,7 @@ FixTDEMIntegrate::~FixTDEMIntegrate()
 
 int FixTDEMIntegrate::setmask()
 {
-  int mask = 0;
-  mask |= INITIAL_INTEGRATE;
-  mask |= FINAL_INTEGRATE;
-  return mask;
+  return INITIAL_INTEGRATE | FINAL_INTEGRATE;
 }
 
 void FixTDEMIntegrate::init()
@@ -187,11 +186,7 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial()
 {
   using KT = ti::Kernel<S, true>;
   using KR = ti::Kernel<S, false>;
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  double **omega = atom->omega, **torque = atom->torque;
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  const int *mask = atom->mask;
-  int nlocal = atom->nlocal;
+  auto [x, v, f, omega, torque, radius, rmass, mask, nlocal] = tdem_lammps::sphere_arrays(atom);
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
   const double h = update->dt, ftm2v = force->ftm2v;
   const int ot = 1, orr = 1 + nhist_t;
@@ -240,11 +235,7 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final()
 {
   using KT = ti::Kernel<S, true>;
   using KR = ti::Kernel<S, false>;
-  double **x = atom->x, **v = atom->v, **f = atom->f;
-  double **omega = atom->omega, **torque = atom->torque;
-  const double *radius = atom->radius, *rmass = atom->rmass;
-  const int *mask = atom->mask;
-  int nlocal = atom->nlocal;
+  auto [x, v, f, omega, torque, radius, rmass, mask, nlocal] = tdem_lammps::sphere_arrays(atom);
   if (igroup == atom->firstgroup) nlocal = atom->nfirst;
   const double h = update->dt, ftm2v = force->ftm2v;
   const int ot = 1, orr = 1 + nhist_t;

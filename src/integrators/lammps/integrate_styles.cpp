@@ -6,13 +6,6 @@
 
 namespace tdem_lammps {
 
-const StyleEntry *integrate_styles()
-{
-  static const StyleEntry table[] = {
-      {StyleKind::fix, "tdem/integrate", "tdem fix style tdem/integrate (time integration schemes)",
-       (void *) &create_fix<LAMMPS_NS::FixTDEMIntegrate>},
-      {}};
-  return table;
-}
+TDEM_LAMMPS_MODULE(integrate_styles, fix_entry<LAMMPS_NS::FixTDEMIntegrate>("tdem/integrate", "tdem fix style tdem/integrate (time integration schemes)"))
 
 }  // namespace tdem_lammps

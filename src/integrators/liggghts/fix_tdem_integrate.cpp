@@ -194,16 +194,15 @@ void FixTDEMIntegrate::accelerations(int i, double ftm2v, double inertia, double
   }
 }
 
+FixTDEMIntegrate::Pass FixTDEMIntegrate::pass() const {
+  const int n = igroup == atom->firstgroup ? atom->nfirst : atom->nlocal;
+  return {atom->x, atom->v, atom->omega, atom->mask, n, update->dt, force->ftm2v, inertia_factor()};
+}
+
 template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial() {
   using KT = ti::Kernel<S, true>;
   using KR = ti::Kernel<S, false>;
-  double** x = atom->x;
-  double** v = atom->v;
-  double** omega = atom->omega;
-  const int* mask = atom->mask;
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  const double h = update->dt, ftm2v = force->ftm2v, inertia = inertia_factor();
+  const auto [x, v, omega, mask, nlocal, h, ftm2v, inertia] = pass();
   const int oat = off_at_, oar = off_ar_, oht = off_ht_, ohr = off_hr_;
 
   for (int i = 0; i < nlocal; i++) {
@@ -230,13 +229,7 @@ template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_initial() {
 template <ti::Scheme S, bool R> void FixTDEMIntegrate::loop_final() {
   using KT = ti::Kernel<S, true>;
   using KR = ti::Kernel<S, false>;
-  double** x = atom->x;
-  double** v = atom->v;
-  double** omega = atom->omega;
-  const int* mask = atom->mask;
-  int nlocal = atom->nlocal;
-  if (igroup == atom->firstgroup) nlocal = atom->nfirst;
-  const double h = update->dt, ftm2v = force->ftm2v, inertia = inertia_factor();
+  const auto [x, v, omega, mask, nlocal, h, ftm2v, inertia] = pass();
   const int oat = off_at_, oar = off_ar_, oht = off_ht_, ohr = off_hr_;
 
   for (int i = 0; i < nlocal; i++) {
@@ -322,10 +315,6 @@ void FixTDEMIntegrate::restart(char* buf) {
 
 /* ---------------------------------------------------------------------- registration */
 
-namespace tdem {
-namespace liggghts {
-void register_fixes(LAMMPS_NS::LAMMPS* lmp) {
+void tdem::liggghts::register_fixes(LAMMPS_NS::LAMMPS* lmp) {
   add_fix_style(lmp, "tdem/integrate", &create_fix<FixTDEMIntegrate>);
 }
-}  // namespace liggghts
-}  // namespace tdem

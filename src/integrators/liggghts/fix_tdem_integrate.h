@@ -77,6 +77,15 @@ class FixTDEMIntegrate : public tdem::host::PerAtomRows<Fix> {
   bool restart_mismatch_;  // restart file of another scheme: every atom starts again
 
   double inertia_factor() const;
+  // what a loop over the group's atoms reads: positions, velocities, spins, masks, the atoms to
+  // visit (nfirst with atom_modify first), the step, ftm2v and the inertia factor
+  struct Pass {
+    double **x, **v, **omega;
+    const int* mask;
+    int nlocal;
+    double h, ftm2v, inertia;
+  };
+  Pass pass() const;
   template <bool R> void accelerations(int i, double ftm2v, double inertia, double* at, double* ar) const;
   void restart_all(const char* why);
   template <tdem::integrators::Scheme S, bool R> void loop_initial();

@@ -58,6 +58,29 @@ inline LAMMPS_NS::Fix *find_clump_correction(LAMMPS_NS::LAMMPS *lmp, const std::
   return found;
 }
 
+// The correction as a pair or wall style keeps it: the clump fix, its mode (Correction, none:
+// the plain loop), the per-step contact tally and the scratch of its MPI merge.
+struct ClumpCorrection {
+  LAMMPS_NS::Fix *fix = nullptr;
+  int mode = 0;
+  tdem::clumps::ContactTally tally;
+  tdem::clumps::TallyExchange buf;
+
+  // at init; dmax bounds the overlaps (the largest sphere diameter: the unit of the fixed-point
+  // overlap sums)
+  void find(LAMMPS_NS::LAMMPS *lmp, const std::string &where, double dmax) {
+    fix = find_clump_correction(lmp, where, mode);
+    if (!fix) mode = 0;
+    if (mode != 0) tally.set_length_scale(dmax > 0.0 ? dmax : 1.0);
+  }
+  tdem::clumps::Correction correction() const { return (tdem::clumps::Correction) mode; }
+  // count and overlap tally the contacts of a step first
+  bool shares() const {
+    return correction() == tdem::clumps::Correction::count || correction() == tdem::clumps::Correction::overlap_share;
+  }
+  void merge(MPI_Comm world) { tdem::clumps::merge_over_ranks(tally, world, buf); }
+};
+
 // Per-step view of the clump fix's body data.
 struct ClumpView {
   const int *body = nullptr;       // per atom (owned and ghost): body index or -1

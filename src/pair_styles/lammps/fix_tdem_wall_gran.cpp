@@ -38,8 +38,7 @@ double wall_number(LAMMPS *lmp, const std::string &where, const std::string &key
 /* ---------------------------------------------------------------------- */
 
 FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
-    PerAtomRows(lmp, narg, arg), fix_rigid(nullptr), mass_rigid(nullptr), fix_clump(nullptr),
-    corr_mode(0)
+    PerAtomRows(lmp, narg, arg)
 {
   const std::string where = std::string("fix ") + id + " tdem/wall/gran";
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
@@ -141,7 +140,6 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
   grow_arrays(atom->nmax);
   atom->add_callback(Atom::GROW);
   atom->add_callback(Atom::RESTART);
-  nmax = 0;
 
   time_origin = update->ntimestep;
 }
@@ -150,7 +148,7 @@ FixTDEMWallGran::~FixTDEMWallGran()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(mass_rigid);
+  rigid.destroy(memory);
 }
 
 int FixTDEMWallGran::setmask()
@@ -166,33 +164,18 @@ void FixTDEMWallGran::init()
   dt = update->dt;
   if (utils::strmatch(update->integrate_style, "^respa"))
     nlevels_respa = ((Respa *) update->integrate)->nlevels;
-  fix_rigid = nullptr;
-  for (int i = 0; i < modify->nfix; i++)
-    if (modify->fix[i]->rigid_flag) {
-      fix_rigid = modify->fix[i];
-      break;
-    }
+  rigid.find(modify);
   // fix tdem/clump with a multiple-contact correction: the corrected path
-  fix_clump = tdem_lammps::find_clump_correction(lmp, std::string("fix ") + id + " tdem/wall/gran", corr_mode);
-  if (!fix_clump) corr_mode = 0;
-  if (corr_mode != 0) {
-    // fixed-point unit of the overlap sums: the largest sphere diameter
-    double rmax = 0.0, all = 0.0;
-    for (int i = 0; i < atom->nlocal; i++) rmax = MAX(rmax, atom->radius[i]);
-    MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
-    tally.set_length_scale(all > 0.0 ? 2.0 * all : 1.0);
-  }
+  // (the largest overlap is below the largest sphere diameter)
+  double rmax = 0.0, all = 0.0;
+  for (int i = 0; i < atom->nlocal; i++) rmax = MAX(rmax, atom->radius[i]);
+  MPI_Allreduce(&rmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  clump.find(lmp, std::string("fix ") + id + " tdem/wall/gran", 2.0 * all);
 }
 
 void FixTDEMWallGran::setup(int vflag)
 {
-  if (utils::strmatch(update->integrate_style, "^verlet"))
-    post_force(vflag);
-  else {
-    ((Respa *) update->integrate)->copy_flevel_f(nlevels_respa - 1);
-    post_force_respa(vflag, nlevels_respa - 1, 0);
-    ((Respa *) update->integrate)->copy_f_flevel(nlevels_respa - 1);
-  }
+  tdem_lammps::setup_post_force(this, update, vflag, nlevels_respa);
 }
 
 namespace {
@@ -209,19 +192,8 @@ struct WallRunnerCorrected {
 
 void FixTDEMWallGran::post_force(int /*vflag*/)
 {
-  if (neighbor->ago == 0 && fix_rigid) {
-    int tmp;
-    int *body = (int *) fix_rigid->extract("body", tmp);
-    double *mass_body = (double *) fix_rigid->extract("masstotal", tmp);
-    if (atom->nmax > nmax) {
-      memory->destroy(mass_rigid);
-      nmax = atom->nmax;
-      memory->create(mass_rigid, nmax, "tdem/wall/gran:mass_rigid");
-    }
-    for (int i = 0; i < atom->nlocal; i++)
-      mass_rigid[i] = (body[i] >= 0) ? mass_body[body[i]] : 0.0;
-  }
-  if (corr_mode != 0) {
+  if (neighbor->ago == 0) rigid.refresh(atom, memory, "tdem/wall/gran:mass_rigid");
+  if (clump.mode != 0) {
     tdem_lammps::dispatch(false, law.mode, law.end, law.slip, law.tlaw, WallRunnerCorrected{this});
     return;
   }
@@ -246,27 +218,18 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
   } else if (wshear)
     vwall0[axis] = vshear;
 
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  double **omg = atom->omega;
-  double **torque = atom->torque;
-  double *radius = atom->radius;
-  double *rmass = atom->rmass;
-  int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
+  const auto [x, v, f, omg, torque, radius, rmass, mask, nlocal] = tdem_lammps::sphere_arrays(atom);
 
   // C: the multiple-contact correction; count / overlap tally the body-wall contacts first (in
   // the order of the force pass below)
   [[maybe_unused]] tdem_lammps::ClumpView cv;
   [[maybe_unused]] std::size_t kcorr = 0;
-  [[maybe_unused]] const tdem::clumps::Correction cmode = (tdem::clumps::Correction) corr_mode;
-  [[maybe_unused]] const bool share = cmode == tdem::clumps::Correction::count ||
-                                      cmode == tdem::clumps::Correction::overlap_share;
+  [[maybe_unused]] const tdem::clumps::Correction cmode = clump.correction();
+  [[maybe_unused]] const bool share = clump.shares();
   if constexpr (C != 0) {
-    cv.fetch(fix_clump, cmode == tdem::clumps::Correction::local_mass);
+    cv.fetch(clump.fix, cmode == tdem::clumps::Correction::local_mass);
     if (share) {
-      tally.clear();
+      clump.tally.clear();
       for (int i = 0; i < nlocal; i++) {
         if (!(mask[i] & groupbit) || cv.body[i] < 0) continue;
         double d[3] = {0.0, 0.0, 0.0};
@@ -285,9 +248,9 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
         }
         const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if (rsq > radius[i] * radius[i]) continue;
-        tally.add((std::int64_t) cv.body[i], side, radius[i] - sqrt(rsq));
+        clump.tally.add((std::int64_t) cv.body[i], side, radius[i] - sqrt(rsq));
       }
-      tdem::clumps::merge_over_ranks(tally, world, tally_buf);
+      clump.merge(world);
     }
   }
 
@@ -336,8 +299,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     // a centre on the wall surface has no normal: stop with the atom ID instead of NaN forces
     if (__builtin_expect(!(rsq > 0.0), 0)) centre_on_wall(i);
 
-    double meff = rmass[i];
-    if (fix_rigid && mass_rigid[i] > 0.0) meff = mass_rigid[i];
+    double meff = rigid.of(i, rmass[i]);
 
     const double r = sqrt(rsq);
     if constexpr (C != 0) {
@@ -365,7 +327,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     if constexpr (C != 0) {
       // count / overlap: the whole contact force times s (the history stays the law's own)
       if (cv.body[i] >= 0 && share) {
-        const double sc = tally.factor(cmode, kcorr++, rad - r);
+        const double sc = clump.tally.factor(cmode, kcorr++, rad - r);
         ccel *= sc;
         fs[0] *= sc;
         fs[1] *= sc;
@@ -373,15 +335,8 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
       }
     }
 
-    f[i][0] += dx * ccel + fs[0];
-    f[i][1] += dy * ccel + fs[1];
-    f[i][2] += dz * ccel + fs[2];
-    const double tor1 = rinv * (dy * fs[2] - dz * fs[1]);
-    const double tor2 = rinv * (dz * fs[0] - dx * fs[2]);
-    const double tor3 = rinv * (dx * fs[1] - dy * fs[0]);
-    torque[i][0] -= rad * tor1;
-    torque[i][1] -= rad * tor2;
-    torque[i][2] -= rad * tor3;
+    double fw[3];
+    tdem_lammps::add_wall_force(f[i], torque[i], dx, dy, dz, ccel, fs, rinv, rad, fw);
     if constexpr (M < 0) {  // rolling resistance against the wall (at rest)
       if (law.roll) {
         torque[i][0] += troll[0];
@@ -408,7 +363,7 @@ void FixTDEMWallGran::post_force_respa(int vflag, int ilevel, int /*iloop*/)
 
 double FixTDEMWallGran::memory_usage()
 {
-  return rows_memory() + (double) nmax * sizeof(double);
+  return rows_memory() + rigid.memory_usage();
 }
 
 void FixTDEMWallGran::reset_dt()

@@ -27,6 +27,7 @@ FixStyle(tdem/wall/gran,FixTDEMWallGran);
 #include "tdem_lammps_law.h"
 
 #include "clump_correction_host.h"
+#include "contact_host.h"
 
 namespace LAMMPS_NS {
 
@@ -61,17 +62,11 @@ class FixTDEMWallGran : public tdem::host::PerAtomRows<Fix> {
   double dt;
   int nlevels_respa;
 
-  class Fix *fix_rigid;
-  double *mass_rigid;
-  int nmax;
+  tdem_lammps::RigidMasses rigid;  // body masses of the spheres of rigid bodies
 
-  // multiple-contact correction of fix tdem/clump: the fix, its mode (tdem::clumps::Correction),
-  // the per-step tally of the body-wall contacts (sides: body index, wall -1 lo, -2 hi, -3
-  // cylinder), scratch for the MPI merge
-  class Fix *fix_clump;
-  int corr_mode;
-  tdem::clumps::ContactTally tally;
-  tdem::clumps::TallyExchange tally_buf;
+  // multiple-contact correction of fix tdem/clump (tally sides: body index, wall -1 lo, -2 hi,
+  // -3 cylinder)
+  tdem_lammps::ClumpCorrection clump;
 };
 
 }  // namespace LAMMPS_NS

@@ -60,11 +60,6 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   atom_ntypes = 0;
   dt = 0.0;
   freeze_group_bit = 0;
-  fix_rigid = nullptr;
-  mass_rigid = nullptr;
-  nmax = 0;
-  fix_clump = nullptr;
-  corr_mode = 0;
   restart_history_tags = -2;
 
   // placeholder for the FixNeighHistory, so it keeps the input-script position in the fix list
@@ -93,7 +88,7 @@ PairTDEMGran::~PairTDEMGran()
     delete[] maxrad_dynamic;
     delete[] maxrad_frozen;
   }
-  memory->destroy(mass_rigid);
+  rigid.destroy(memory);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -141,23 +136,13 @@ void PairTDEMGran::compute(int eflag, int vflag)
   ev_init(eflag, vflag);
 
   // rigid body masses of owned and ghost atoms (as the LAMMPS granular styles)
-  if (fix_rigid && neighbor->ago == 0) {
-    int tmp;
-    int *body = (int *) fix_rigid->extract("body", tmp);
-    double *mass_body = (double *) fix_rigid->extract("masstotal", tmp);
-    if (atom->nmax > nmax) {
-      memory->destroy(mass_rigid);
-      nmax = atom->nmax;
-      memory->create(mass_rigid, nmax, "pair:mass_rigid");
-    }
-    const int nlocal = atom->nlocal;
-    for (int i = 0; i < nlocal; i++)
-      mass_rigid[i] = (body[i] >= 0) ? mass_body[body[i]] : 0.0;
+  if (rigid.fix && neighbor->ago == 0) {
+    rigid.refresh(atom, memory, "pair:mass_rigid");
     tdem_lammps::compat::forward_comm(comm, this);
   }
 
   // the multiple-contact correction of fix tdem/clump: a separate instantiation
-  if (corr_mode != 0) {
+  if (clump.mode != 0) {
     tdem_lammps::dispatch(false, umode, uend, uslip, utlaw, PairRunnerCorrected{this, eflag, vflag});
     if (vflag_fdotr) virial_fdotr_compute();
     return;
@@ -218,14 +203,13 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   // one side is tallied first (same loop order as the force pass below, k-th contact = k-th add)
   [[maybe_unused]] tdem_lammps::ClumpView cv;
   [[maybe_unused]] std::size_t kcorr = 0;
-  [[maybe_unused]] const tdem::clumps::Correction cmode = (tdem::clumps::Correction) corr_mode;
-  [[maybe_unused]] const bool share = cmode == tdem::clumps::Correction::count ||
-                                      cmode == tdem::clumps::Correction::overlap_share;
+  [[maybe_unused]] const tdem::clumps::Correction cmode = clump.correction();
+  [[maybe_unused]] const bool share = clump.shares();
   [[maybe_unused]] tagint *tag = atom->tag;
   if constexpr (C != 0) {
-    cv.fetch(fix_clump, cmode == tdem::clumps::Correction::local_mass);
+    cv.fetch(clump.fix, cmode == tdem::clumps::Correction::local_mass);
     if (share) {
-      tally.clear();
+      clump.tally.clear();
       for (int ii = 0; ii < inum; ii++) {
         const int i = ilist[ii];
         const int *jl = firstneigh[i];
@@ -241,10 +225,10 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
           const std::int64_t b = cv.body[j] >= 0 ? (std::int64_t) cv.body[j] : -(std::int64_t) tag[j] - 1;
           // newton off: a pair with a ghost j is also in the list of the rank (or image) owning
           // j; it is counted where tag[i] <= tag[j] (equal: two images of one sphere, two contacts)
-          tally.add(a, b, xi, newton_pair || j < nlocal || tag[i] <= tag[j]);
+          clump.tally.add(a, b, xi, newton_pair || j < nlocal || tag[i] <= tag[j]);
         }
       }
-      tdem::clumps::merge_over_ranks(tally, world, tally_buf);
+      clump.merge(world);
     }
   }
 
@@ -302,12 +286,8 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       const double wr3 = (radi * omega[i][2] + radj * omega[j][2]) * rinv;
 
       // effective mass: rigid body masses; a frozen partner has infinite mass
-      double mi = rmass[i];
-      double mj = rmass[j];
-      if (fix_rigid) {
-        if (mass_rigid[i] > 0.0) mi = mass_rigid[i];
-        if (mass_rigid[j] > 0.0) mj = mass_rigid[j];
-      }
+      const double mi = rigid.of(i, rmass[i]);
+      const double mj = rigid.of(j, rmass[j]);
       double meff = mi * mj / (mi + mj);
       if (mask[i] & freeze_group_bit) meff = mj;
       if (mask[j] & freeze_group_bit) meff = mi;
@@ -348,7 +328,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         // count / overlap: the whole contact force (normal and tangential) times s; the stored
         // tangential history is the law's own
         if (clump_contact && share) {
-          const double sc = tally.factor(cmode, kcorr++, radsum - r);
+          const double sc = clump.tally.factor(cmode, kcorr++, radsum - r);
           ccel *= sc;
           fs[0] *= sc;
           fs[1] *= sc;
@@ -425,16 +405,16 @@ void PairTDEMGran::reset_dt()
 
 int PairTDEMGran::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
 {
-  for (int i = 0; i < n; i++) buf[i] = mass_rigid[list[i]];
+  for (int i = 0; i < n; i++) buf[i] = rigid.mass[list[i]];
   return n;
 }
 
 void PairTDEMGran::unpack_forward_comm(int n, int first, double *buf)
 {
-  for (int i = 0; i < n; i++) mass_rigid[first + i] = buf[i];
+  for (int i = 0; i < n; i++) rigid.mass[first + i] = buf[i];
 }
 
 double PairTDEMGran::memory_usage()
 {
-  return (double) nmax * sizeof(double);
+  return rigid.memory_usage();
 }

@@ -32,6 +32,7 @@ PairStyle(tdem/gran,PairTDEMGran);
 #include "lammps_compat.h"
 #include "pair.h"
 #include "tdem_lammps_law.h"
+#include "contact_host.h"
 
 #include "clump_correction_host.h"
 
@@ -94,17 +95,11 @@ class PairTDEMGran : public Pair {
   // (tdem_lammps::compat::HistoryTags; -2: not read from a restart file)
   int restart_history_tags;
 
-  class Fix *fix_rigid;
-  double *mass_rigid;
-  int nmax;
+  tdem_lammps::RigidMasses rigid;  // body masses of the spheres of rigid bodies
 
-  // multiple-contact correction of fix tdem/clump (clumps/multi_contact.h): the fix, its mode
-  // (tdem::clumps::Correction; none = no corrected path), the per-step contact tally (count,
-  // overlap) with the contacts another rank counts too (newton off), scratch for the MPI merge
-  class Fix *fix_clump;
-  int corr_mode;
-  tdem::clumps::ContactTally tally;
-  tdem::clumps::TallyExchange tally_buf;
+  // multiple-contact correction of fix tdem/clump (clumps/multi_contact.h; count and overlap
+  // tally the contacts another rank counts too with newton off)
+  tdem_lammps::ClumpCorrection clump;
 
   void allocate();
   tdem_lammps::LawCoeffs &coeffs(int i, int j) { return law[i * (atom_ntypes + 1) + j]; }

@@ -168,15 +168,7 @@ void PairTDEMGran::init_style()
   freeze_group_bit = freeze ? freeze->groupbit : 0;
 
   // fix rigid: use body masses (first rigid fix, as the LAMMPS granular styles)
-  fix_rigid = nullptr;
-  for (int i = 0; i < modify->nfix; i++)
-    if (modify->fix[i]->rigid_flag) {
-      fix_rigid = modify->fix[i];
-      break;
-    }
-  // fix tdem/clump with a multiple-contact correction: the corrected path
-  fix_clump = tdem_lammps::find_clump_correction(lmp, "pair tdem/gran", corr_mode);
-  if (!fix_clump) corr_mode = 0;
+  rigid.find(modify);
 
   // largest radii per type, including particles fix pour / fix deposit will insert
   Fix *pour = tdem_lammps::compat::first_fix_by_style(modify, "^pour");
@@ -200,12 +192,11 @@ void PairTDEMGran::init_style()
   }
   MPI_Allreduce(&onerad_dynamic[1], &maxrad_dynamic[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
   MPI_Allreduce(&onerad_frozen[1], &maxrad_frozen[1], atom->ntypes, MPI_DOUBLE, MPI_MAX, world);
-  if (corr_mode != 0) {
-    // fixed-point unit of the overlap sums: the largest overlap is below the largest diameter
-    double dmax = 0.0;
-    for (int i = 1; i <= atom->ntypes; i++) dmax = MAX(dmax, 2.0 * MAX(maxrad_dynamic[i], maxrad_frozen[i]));
-    tally.set_length_scale(dmax > 0.0 ? dmax : 1.0);
-  }
+  // fix tdem/clump with a multiple-contact correction: the corrected path (the largest overlap is
+  // below the largest diameter)
+  double dmax = 0.0;
+  for (int i = 1; i <= atom->ntypes; i++) dmax = MAX(dmax, 2.0 * MAX(maxrad_dynamic[i], maxrad_frozen[i]));
+  clump.find(lmp, "pair tdem/gran", dmax);
 
   const int ifix = modify->find_fix(id_history);
   if (ifix < 0) error->all(FLERR, "pair tdem/gran: could not find its fix " + id_history);
@@ -327,11 +318,7 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 
   double *rmass = atom->rmass;
   int *mask = atom->mask;
-  double mi = rmass[i], mj = rmass[j];
-  if (fix_rigid && mass_rigid) {
-    if (mass_rigid[i] > 0.0) mi = mass_rigid[i];
-    if (mass_rigid[j] > 0.0) mj = mass_rigid[j];
-  }
+  const double mi = rigid.of(i, rmass[i]), mj = rigid.of(j, rmass[j]);
   double meff = mi * mj / (mi + mj);
   if (mask[i] & freeze_group_bit) meff = mj;
   if (mask[j] & freeze_group_bit) meff = mi;

@@ -83,28 +83,36 @@ double poisson(LAMMPS *lmp, const std::string &where, const std::string &name, c
   return nu;
 }
 
+// The material pair `E NU [E2 NU2]` of normal LAW at arg[iarg] (n = 2 or 4 values) into c.E1 ..
+// c.nu2; `before` names what follows in the count message ("" or " before e_fit").
+int parse_materials(LAMMPS *lmp, const std::string &where, const std::string &law, int narg, char **arg, int iarg,
+                    const char *before, LawCoeffs &c) {
+  const int n = available(narg, arg, iarg);
+  if (n != 2 && n != 4)
+    fail(lmp, where,
+         "normal " + law + " needs 2 values (E NU: both partners of one material) or 4 values (E1 NU1 E2 NU2)" +
+             before + ", got " + std::to_string(n));
+  const std::string w = "normal " + law + " ";
+  c.E1 = number(lmp, where, w + "E", arg[iarg]);
+  positive(lmp, where, w + "E (Young's modulus)", c.E1);
+  c.nu1 = poisson(lmp, where, w + "NU (Poisson ratio)", arg[iarg + 1]);
+  if (n == 4) {
+    c.E2 = number(lmp, where, w + "E2", arg[iarg + 2]);
+    positive(lmp, where, w + "E2 (Young's modulus)", c.E2);
+    c.nu2 = poisson(lmp, where, w + "NU2 (Poisson ratio)", arg[iarg + 3]);
+  } else {
+    c.E2 = c.E1;
+    c.nu2 = c.nu1;
+  }
+  return iarg + n;
+}
+
 // normal hertz E NU [E2 NU2] [damping linear GAMMA | kuwabara_kono GAMMA | tsuji E |
 //                             general THETA C]
 int parse_hertz(LAMMPS *lmp, const std::string &where, int narg, char **arg, int iarg,
                 LawCoeffs &c) {
   c.mode = MODE_HERTZ;
-  const int n = available(narg, arg, iarg);
-  if (n != 2 && n != 4)
-    fail(lmp, where,
-         "normal hertz needs 2 values (E NU: both partners of one material) or 4 values "
-         "(E1 NU1 E2 NU2), got " + std::to_string(n));
-  c.E1 = number(lmp, where, "normal hertz E", arg[iarg]);
-  positive(lmp, where, "normal hertz E (Young's modulus)", c.E1);
-  c.nu1 = poisson(lmp, where, "normal hertz NU (Poisson ratio)", arg[iarg + 1]);
-  if (n == 4) {
-    c.E2 = number(lmp, where, "normal hertz E2", arg[iarg + 2]);
-    positive(lmp, where, "normal hertz E2 (Young's modulus)", c.E2);
-    c.nu2 = poisson(lmp, where, "normal hertz NU2 (Poisson ratio)", arg[iarg + 3]);
-  } else {
-    c.E2 = c.E1;
-    c.nu2 = c.nu1;
-  }
-  iarg += n;
+  iarg = parse_materials(lmp, where, "hertz", narg, arg, iarg, "", c);
   c.hdamp = HDAMP_LINEAR;
   c.hgamma = 0.0;
   if (iarg < narg && strcmp(arg[iarg], "damping") == 0) {
@@ -271,23 +279,7 @@ int parse_extended(LAMMPS *lmp, const std::string &where, bool hertz, int narg, 
   c.mode = hertz ? MODE_EXT_HERTZ : MODE_EXT_LINEAR;
   c.ext = tdem::extended::LinearParams();
   if (hertz) {
-    const int n = available(narg, arg, iarg);
-    if (n != 2 && n != 4)
-      fail(lmp, where,
-           "normal extended_hertz needs 2 values (E NU: both partners of one material) or 4 "
-           "values (E1 NU1 E2 NU2) before e_fit, got " + std::to_string(n));
-    c.E1 = number(lmp, where, "normal extended_hertz E", arg[iarg]);
-    positive(lmp, where, "normal extended_hertz E (Young's modulus)", c.E1);
-    c.nu1 = poisson(lmp, where, "normal extended_hertz NU (Poisson ratio)", arg[iarg + 1]);
-    if (n == 4) {
-      c.E2 = number(lmp, where, "normal extended_hertz E2", arg[iarg + 2]);
-      positive(lmp, where, "normal extended_hertz E2 (Young's modulus)", c.E2);
-      c.nu2 = poisson(lmp, where, "normal extended_hertz NU2 (Poisson ratio)", arg[iarg + 3]);
-    } else {
-      c.E2 = c.E1;
-      c.nu2 = c.nu1;
-    }
-    iarg += n;
+    iarg = parse_materials(lmp, where, law, narg, arg, iarg, " before e_fit", c);
   } else if (available(narg, arg, iarg) != 0) {
     fail(lmp, where, std::string("normal extended_linear expects 'e_fit FORM C..' next, got '") +
                          arg[iarg] + "'");

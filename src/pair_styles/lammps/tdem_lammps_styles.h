@@ -38,6 +38,27 @@ LAMMPS_NS::Compute *create_compute(LAMMPS_NS::LAMMPS *lmp, int narg, char **arg)
   return new T(lmp, narg, arg);
 }
 
+// Entries of a fix or compute style T.
+template <class T>
+StyleEntry fix_entry(const char *name, const char *info)
+{
+  return {StyleKind::fix, name, info, (void *) &create_fix<T>};
+}
+template <class T>
+StyleEntry compute_entry(const char *name, const char *info)
+{
+  return {StyleKind::compute, name, info, (void *) &create_compute<T>};
+}
+
+// Defines a module's table function from its entries, as LAMMPS's FixStyle(name, class) lines
+// do: TDEM_LAMMPS_MODULE(clump_styles, fix_entry<FixTDEMClump>("tdem/clump", "..."))
+#define TDEM_LAMMPS_MODULE(function, ...)                  \
+  const StyleEntry *function()                             \
+  {                                                        \
+    static const StyleEntry table[] = {__VA_ARGS__, {}};   \
+    return table;                                          \
+  }
+
 // Styles of the optional modules (CMake options TDEM_LAMMPS_<MODULE>, default ON), each a table
 // terminated by an entry with name == nullptr; defined in src/fixes/<module>/lammps/*_styles.cpp
 // (integrate_styles: src/integrators/lammps/integrate_styles.cpp).

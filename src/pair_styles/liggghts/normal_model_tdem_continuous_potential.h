@@ -93,21 +93,13 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
   // (R_i for a wall) as in surfacesIntersect.
   void publish_advice() {
     namespace ad = tdem::liggghts::advice;
-    ad::Entry e;
-    e.model = this;
-    e.law = ad::Law::continuous_potential;
-    e.name = "tdem/continuous_potential";
-    e.settings = std::string("limitForce ") + ad::on_off(limit_force_);
-    e.end = end_;
-    const auto coef = coef_;
-    e.coefficients = [coef](const ad::PairData& d) {
-      const PairCoefficients& pc = coef(d.itype, d.jtype);
-      ad::Coefficients c;
-      c.potential = {pc.eps, d.distance, pc.n, d.distance, pc.gamma};
-      return c;
-    };
-    ad::publish(advice_owner_, std::move(e));
+    ad::publish_table(advice_owner_, this, ad::Law::continuous_potential, "tdem/continuous_potential", end_,
+                      std::string("limitForce ") + ad::on_off(limit_force_), coef_,
+                      [](const PairCoefficients& pc, const ad::PairData& d, ad::Coefficients& c) {
+                        c.potential = {pc.eps, d.distance, pc.n, d.distance, pc.gamma};
+                      });
   }
+
 
  private:
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)

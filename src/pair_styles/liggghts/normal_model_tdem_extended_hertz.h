@@ -130,23 +130,15 @@ class NormalModel<TDEM_EXTENDED_HERTZ> : public NormalModelBase {
   // the pair's R* as in surfacesIntersect.
   void publish_advice() {
     namespace ad = tdem::liggghts::advice;
-    ad::Entry e;
-    e.model = this;
-    e.law = ad::Law::extended_hertz;
-    e.name = "tdem/extended_hertz";
-    e.settings = "restitutionFit " + tdem::liggghts::restitution_fit_words()[e_form_] + ", limitForce " +
-                 ad::on_off(limit_force_);
-    e.end = end_;
-    const auto coef = coef_;
-    e.coefficients = [coef](const ad::PairData& d) {
-      const PairCoefficients& pc = coef(d.itype, d.jtype);
-      ad::Coefficients c;
-      c.extended_hertz = pc.p;
-      c.extended_hertz.k = pc.k_per_sqrt_r * std::sqrt(d.reff);
-      return c;
-    };
-    ad::publish(advice_owner_, std::move(e));
+    ad::publish_table(advice_owner_, this, ad::Law::extended_hertz, "tdem/extended_hertz", end_,
+                      "restitutionFit " + tdem::liggghts::restitution_fit_words()[e_form_] + ", limitForce " +
+                          ad::on_off(limit_force_),
+                      coef_, [](const PairCoefficients& pc, const ad::PairData& d, ad::Coefficients& c) {
+                        c.extended_hertz = pc.p;
+                        c.extended_hertz.k = pc.k_per_sqrt_r * std::sqrt(d.reff);
+                      });
   }
+
 
  private:
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)

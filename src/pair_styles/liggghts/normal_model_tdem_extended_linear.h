@@ -124,21 +124,14 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
   // The settings and coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
   void publish_advice() {
     namespace ad = tdem::liggghts::advice;
-    ad::Entry e;
-    e.model = this;
-    e.law = ad::Law::extended_linear;
-    e.name = "tdem/extended_linear";
-    e.settings = "restitutionFit " + tdem::liggghts::restitution_fit_words()[e_form_] + ", contactTimeFit " +
-                 tdem::liggghts::contact_time_fit_words()[tc_form_] + ", limitForce " + ad::on_off(limit_force_);
-    e.end = end_;
-    const auto coef = coef_;
-    e.coefficients = [coef](const ad::PairData& d) {
-      ad::Coefficients c;
-      c.extended_linear = coef(d.itype, d.jtype).p;
-      return c;
-    };
-    ad::publish(advice_owner_, std::move(e));
+    ad::publish_table(advice_owner_, this, ad::Law::extended_linear, "tdem/extended_linear", end_,
+                      "restitutionFit " + tdem::liggghts::restitution_fit_words()[e_form_] + ", contactTimeFit " +
+                          tdem::liggghts::contact_time_fit_words()[tc_form_] + ", limitForce " + ad::on_off(limit_force_),
+                      coef_, [](const PairCoefficients& pc, const ad::PairData&, ad::Coefficients& c) {
+                        c.extended_linear = pc.p;
+                      });
   }
+
 
  private:
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)

@@ -131,22 +131,15 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
   // The settings and coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
   void publish_advice() {
     namespace ad = tdem::liggghts::advice;
-    ad::Entry e;
-    e.model = this;
-    e.law = ad::Law::hertz;
-    e.name = "tdem/hertz";
-    e.settings = std::string("damping ") + tdem::hertz::to_string(damping_) + ", limitForce " + ad::on_off(limit_force_);
-    e.end = end_;
-    e.damping = damping_;
-    const auto coef = coef_;
-    e.coefficients = [coef](const ad::PairData& d) {
-      const PairCoefficients& pc = coef(d.itype, d.jtype);
-      ad::Coefficients c;
-      c.hertz = {pc.k_per_sqrt_r * std::sqrt(d.reff), pc.damp, pc.theta};
-      return c;
-    };
-    ad::publish(advice_owner_, std::move(e));
+    ad::publish_table(
+        advice_owner_, this, ad::Law::hertz, "tdem/hertz", end_,
+        std::string("damping ") + tdem::hertz::to_string(damping_) + ", limitForce " + ad::on_off(limit_force_), coef_,
+        [](const PairCoefficients& pc, const ad::PairData& d, ad::Coefficients& c) {
+          c.hertz = {pc.k_per_sqrt_r * std::sqrt(d.reff), pc.damp, pc.theta};
+        },
+        damping_);
   }
+
 
  private:
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)

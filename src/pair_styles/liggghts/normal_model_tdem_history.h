@@ -190,20 +190,13 @@ class TdemHistoryNormalModel : public NormalModelBase {
   // The coefficients for fix tdem/timestep (tdem_liggghts_advice.h).
   void publish_advice() {
     namespace advice = tdem::liggghts::advice;
-    advice::Entry e;
-    e.model = this;
-    e.law = advice::Law::unit;
-    e.unit = tdem::law::index_of<tdem::law::normal_units>(&U::description);
-    e.name = tdem::liggghts::unit_model<U>();
-    e.end = U::end;
-    const auto coef = coef_;
-    e.coefficients = [coef](const advice::PairData& d) {
-      advice::Coefficients c;
-      c.unit.set(coef(d.itype, d.jtype).p);
-      return c;
-    };
-    advice::publish(advice_owner_, std::move(e));
+    advice::publish_table(advice_owner_, this, advice::Law::unit, tdem::liggghts::unit_model<U>(), U::end, "", coef_,
+                          [](const Coefficients& pc, const advice::PairData&, advice::Coefficients& c) {
+                            c.unit.set(pc.p);
+                          })
+        .unit = tdem::law::index_of<tdem::law::normal_units>(&U::description);
   }
+
 
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   tdem::liggghts::PairTable<Coefficients> coef_;

@@ -233,37 +233,29 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
   void publish_advice() {
     namespace ad = tdem::liggghts::advice;
     static const char* const words[] = {"stiffness", "restitution", "material"};
-    ad::Entry e;
-    e.model = this;
-    e.law = ad::Law::lsd;
-    e.name = "tdem/lsd";
-    e.settings = std::string("parameters ") + words[parameters_] + ", absolute_damping " +
-                 ad::on_off(absolute_damping_) + ", limitForce " + ad::on_off(limit_force_);
-    e.end = end_;
-    const auto coef = coef_;
     const int mode = parameters_;
     const bool kpm = stiffness_per_mass_, gpm = damping_per_mass_;
     const double vchar = char_vel_, nktv2p = force->nktv2p;
     const tdem::ContactEnd end = end_;
-    e.coefficients = [coef, mode, kpm, gpm, vchar, nktv2p, end](const ad::PairData& d) {
-      const PairCoefficients& pc = coef(d.itype, d.jtype);
-      double kn = pc.kn, gamman = pc.gamman;
-      if (mode == MATERIAL) {
-        const double k = tdem::lsd::stiffness_matching_hertz(pc.kn, d.reff, d.meff, vchar);
-        gamman = end == tdem::ContactEnd::zero_overlap
-                     ? tdem::lsd::damping_zero_overlap_from_log_restitution(pc.gamman, k, d.meff)
-                     : tdem::lsd::damping_from_ratio(pc.gamman, k, d.meff);
-        kn = k / nktv2p;
-      } else if (kpm) {
-        kn = d.meff * kn;
-      }
-      if (gpm) gamman = d.meff * gamman;
-      ad::Coefficients c;
-      c.lsd = {kn, gamman};
-      return c;
-    };
-    ad::publish(advice_owner_, std::move(e));
+    ad::publish_table(advice_owner_, this, ad::Law::lsd, "tdem/lsd", end_,
+                      std::string("parameters ") + words[parameters_] + ", absolute_damping " +
+                          ad::on_off(absolute_damping_) + ", limitForce " + ad::on_off(limit_force_),
+                      coef_, [=](const PairCoefficients& pc, const ad::PairData& d, ad::Coefficients& c) {
+                        double kn = pc.kn, gamman = pc.gamman;
+                        if (mode == MATERIAL) {
+                          const double k = tdem::lsd::stiffness_matching_hertz(pc.kn, d.reff, d.meff, vchar);
+                          gamman = end == tdem::ContactEnd::zero_overlap
+                                       ? tdem::lsd::damping_zero_overlap_from_log_restitution(pc.gamman, k, d.meff)
+                                       : tdem::lsd::damping_from_ratio(pc.gamman, k, d.meff);
+                          kn = k / nktv2p;
+                        } else if (kpm) {
+                          kn = d.meff * kn;
+                        }
+                        if (gpm) gamman = d.meff * gamman;
+                        c.lsd = {kn, gamman};
+                      });
   }
+
 
  private:
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)

@@ -86,6 +86,28 @@ inline const Entry* find(const void* owner) {
 
 inline const char* on_off(bool b) { return b ? "on" : "off"; }
 
+// Publishes the entry of `model` under `owner` with the coefficients of its per-type-pair table
+// (a copy is kept): fill(row of types i j, pair data, coefficients) writes the law's member.
+// Returns the published entry.
+template <class Table, class Fill>
+Entry& publish_table(const void* owner, const void* model, Law law, std::string name, ContactEnd end,
+                   std::string settings, const Table& table, Fill fill, hertz::Damping damping = hertz::Damping::tsuji) {
+  Entry e;
+  e.model = model;
+  e.law = law;
+  e.name = std::move(name);
+  e.settings = std::move(settings);
+  e.end = end;
+  e.damping = damping;
+  e.coefficients = [table, fill](const PairData& d) {
+    Coefficients c;
+    fill(table(d.itype, d.jtype), d, c);
+    return c;
+  };
+  publish(owner, std::move(e));
+  return entries()[owner];
+}
+
 }  // namespace advice
 }  // namespace liggghts
 }  // namespace tdem

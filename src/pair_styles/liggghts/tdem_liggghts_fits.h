@@ -43,24 +43,22 @@ struct FitMatrices {
   int n = 0;
 };
 
-inline FitMatrices connect_restitution_fit(PropertyRegistry& registry, fits::Form form, const char* caller) {
+// The coefficient properties of a fit of e(v0) (which 'e') or t_c(v0) (which 't').
+inline FitMatrices connect_fit(PropertyRegistry& registry, fits::Form form, char which, const char* caller) {
   FitMatrices m;
-  m.n = fits::coefficient_count(form, 'e');
+  m.n = fits::coefficient_count(form, which);
   for (int k = 0; k < m.n; ++k) {
-    registry.registerProperty(kPropRestitutionFit[k], create_restitution_fit[k]);
-    registry.connect(kPropRestitutionFit[k], m.c[k], caller);
+    const char* name = which == 'e' ? kPropRestitutionFit[k] : kPropContactTimeFit[k];
+    registry.registerProperty(name, which == 'e' ? create_restitution_fit[k] : create_contact_time_fit[k]);
+    registry.connect(name, m.c[k], caller);
   }
   return m;
 }
-
+inline FitMatrices connect_restitution_fit(PropertyRegistry& registry, fits::Form form, const char* caller) {
+  return connect_fit(registry, form, 'e', caller);
+}
 inline FitMatrices connect_contact_time_fit(PropertyRegistry& registry, fits::Form form, const char* caller) {
-  FitMatrices m;
-  m.n = fits::coefficient_count(form, 't');
-  for (int k = 0; k < m.n; ++k) {
-    registry.registerProperty(kPropContactTimeFit[k], create_contact_time_fit[k]);
-    registry.connect(kPropContactTimeFit[k], m.c[k], caller);
-  }
-  return m;
+  return connect_fit(registry, form, 't', caller);
 }
 
 inline fits::Fit fit_of(fits::Form form, const FitMatrices& m, int i, int j) {

@@ -6,13 +6,6 @@
 
 namespace tdem_lammps {
 
-const StyleEntry *clump_styles()
-{
-  static const StyleEntry table[] = {
-      {StyleKind::fix, "tdem/clump", "tdem fix style tdem/clump (rigid multi-sphere clumps)",
-       (void *) &create_fix<LAMMPS_NS::FixTDEMClump>},
-      {}};
-  return table;
-}
+TDEM_LAMMPS_MODULE(clump_styles, fix_entry<LAMMPS_NS::FixTDEMClump>("tdem/clump", "tdem fix style tdem/clump (rigid multi-sphere clumps)"))
 
 }  // namespace tdem_lammps

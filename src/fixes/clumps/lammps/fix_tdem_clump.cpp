@@ -29,7 +29,6 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 namespace cl = tdem::clumps;
-using cl::Vec3;
 
 namespace {
 constexpr double kRestartMagic = 20261129.0;
@@ -116,20 +115,12 @@ void FixTDEMClump::insert_clumps()
   const std::string &rname = args.insert_region;
   Region *region = tdem_lammps::compat::region_by_id(domain, rname);
   if (!region) error->all(FLERR, where + ": insert region '" + rname + "' does not exist (keyword 'insert')");
-  if (!region->bboxflag)
-    error->all(FLERR, where + ": insert region '" + rname + "' has no bounding box (use a bounded region)");
-  region->prematch();
-  // the placement of the core (body_set.h, host_bodies.h): the same seed gives the same clumps in
-  // both engines
-  const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
-  const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
   std::vector<cl::NewSphere> spheres;
   try {
+    // the placement of the core (clump_host.h): the same seed gives the same clumps in both engines
     spheres = cl::insert_clumps(
-        bodies, args, world, atom, lo, hi, [&](double x, double y, double z) { return region->match(x, y, z) != 0; },
-        [&](double *d) { tdem_lammps::compat::minimum_image(domain, d[0], d[1], d[2]); },
-        Vec3{domain->xperiodic ? domain->xprd : 0.0, domain->yperiodic ? domain->yprd : 0.0,
-             domain->zperiodic ? domain->zprd : 0.0});
+        bodies, args, world, atom, region,
+        [&](double *d) { tdem_lammps::compat::minimum_image(domain, d[0], d[1], d[2]); }, cl::periods(domain));
   } catch (const std::exception &e) {
     error->all(FLERR, e.what());
   }
@@ -139,28 +130,15 @@ void FixTDEMClump::insert_clumps()
   const int nprev = atom->nlocal;
   bool top[3];
   for (int d = 0; d < 3; d++) top[d] = domain->subhi[d] == domain->boxhi[d] && !domain->periodicity[d];
-  bigint mycreated = 0;
-  for (const cl::NewSphere &s : spheres) {
+  const bigint created = cl::create_spheres(bodies, atom, spheres, groupbit, world, [&](const cl::NewSphere &s) {
     double xw[3] = {s.x[0], s.x[1], s.x[2]};
     imageint img = ((imageint) IMGMAX << IMG2BITS) | ((imageint) IMGMAX << IMGBITS) | IMGMAX;
     domain->remap(xw, img);
-    if (!cl::owns_point(xw, domain->sublo, domain->subhi, top)) continue;
+    if (!cl::owns_point(xw, domain->sublo, domain->subhi, top)) return -1;
     atom->avec->create_atom(args.insert_type, xw);
-    const int n = atom->nlocal - 1;
-    atom->tag[n] = (tagint) s.tag;
-    atom->molecule[n] = (tagint) s.mol;
-    atom->image[n] = img;
-    atom->mask[n] |= groupbit;
-    atom->radius[n] = bodies.tmpl().body[s.sphere].r;
-    atom->rmass[n] = bodies.sphere_mass()[s.sphere];
-    for (int d = 0; d < 3; d++) {
-      atom->v[n][d] = s.v[d];
-      atom->omega[n][d] = 0.0;
-    }
-    mycreated++;
-  }
-  bigint created = 0;
-  MPI_Allreduce(&mycreated, &created, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    atom->image[atom->nlocal - 1] = img;
+    return atom->nlocal - 1;
+  });
   if (created != (bigint) spheres.size())
     error->all(FLERR, fmt::format("{}: insert: {} spheres created instead of {} (a sphere outside every "
                                   "subdomain: is region {} inside the box?)",
@@ -266,17 +244,7 @@ void FixTDEMClump::reset_dt()
 // owned spheres from their bodies: x (if positions, with the image flags), v, omega
 void FixTDEMClump::set_spheres(bool positions)
 {
-  const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
-  const imageint *image = atom->image;
-  bodies.set_spheres(
-      atom->nlocal, atom->x, atom->v, atom->omega, prd,
-      [image](int i, int *box) {
-        const imageint img = image[i];
-        box[0] = (int) (img & IMGMASK) - IMGMAX;
-        box[1] = (int) (img >> IMGBITS & IMGMASK) - IMGMAX;
-        box[2] = (int) (img >> IMG2BITS) - IMGMAX;
-      },
-      positions);
+  cl::set_spheres(bodies, atom, domain->prd, {IMGMASK, IMGBITS, IMG2BITS, IMGMAX}, positions);
 }
 
 void FixTDEMClump::initial_integrate(int /*vflag*/)
@@ -331,27 +299,22 @@ void *FixTDEMClump::extract(const char *name, int &dim)
 
 /* ---------------------------------------------------------------------- */
 
-// magic, nbody, nsph, formed, then per body: mol, x, v, q, L, nsph tags
+// magic, nbody, nsph, formed, then per body: mol, x, v, q, L, nsph tags (clump_host.h)
 void FixTDEMClump::write_restart(FILE *fp)
 {
-  if (comm->me != 0) return;
-  std::vector<double> buf = {kRestartMagic, (double) bodies.size(), (double) bodies.nsph(), (double) formed};
-  bodies.pack(buf, false);
-  const int size = (int) (buf.size() * sizeof(double));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(buf.data(), sizeof(double), buf.size(), fp);
+  if (comm->me == 0) cl::write_restart_record(fp, bodies, kRestartMagic, {(double) formed}, false);
 }
 
 void FixTDEMClump::restart(char *raw)
 {
-  const double *buf = (const double *) raw;
-  if (buf[0] != kRestartMagic) error->all(FLERR, where + ": the restart record is not a tdem/clump record");
-  formed = (int) buf[3];
+  double flag = 0.0;
   try {
-    bodies.unpack(buf + 4, (int) buf[1], (int) buf[2], false);
+    cl::read_restart_record(raw, bodies, kRestartMagic, &flag, 1, false,
+                            where + ": the restart record is not a tdem/clump record");
   } catch (const std::exception &e) {
     error->all(FLERR, e.what());
   }
+  formed = (int) flag;
   size_array_rows = (int) bodies.size();
   restarted = 1;
 }

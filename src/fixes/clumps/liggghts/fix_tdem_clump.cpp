@@ -34,10 +34,8 @@
 using namespace LAMMPS_NS;
 using namespace FixConst;
 namespace cl = tdem::clumps;
-using cl::Vec3;
 
 namespace {
-constexpr double kRestartMagic = 20261130.0;
 
 // Neighbor's molecule exclusion list is protected in LIGGGHTS 3.8: read through pointers to members
 // taken in a derived class (the legal way to reach a protected member of another object).
@@ -138,17 +136,11 @@ void FixTDEMClump::insert_clumps() {
   const int iregion = domain->find_region(rname.c_str());
   if (iregion < 0) fail(where_ + ": insert region '" + rname + "' does not exist (keyword 'insert')");
   Region* region = domain->regions[iregion];
-  if (!region->bboxflag) fail(where_ + ": insert region '" + rname + "' has no bounding box (use a bounded region)");
-  region->prematch();
-  const double lo[3] = {region->extent_xlo, region->extent_ylo, region->extent_zlo};
-  const double hi[3] = {region->extent_xhi, region->extent_yhi, region->extent_zhi};
-  const Vec3 period{domain->xperiodic ? domain->xprd : 0.0, domain->yperiodic ? domain->yprd : 0.0,
-                    domain->zperiodic ? domain->zprd : 0.0};
   std::vector<cl::NewSphere> spheres;
   try {
-    spheres = cl::insert_clumps(
-        bodies_, args_, world, atom, lo, hi, [&](double x, double y, double z) { return region->match(x, y, z) != 0; },
-        [&](double* d) { domain->minimum_image(d[0], d[1], d[2]); }, period);
+    // the placement of the core (clump_host.h): the same seed gives the same clumps in both engines
+    spheres = cl::insert_clumps(bodies_, args_, world, atom, region,
+                                [&](double* d) { domain->minimum_image(d[0], d[1], d[2]); }, cl::periods(domain));
   } catch (const std::exception& e) {
     fail(e.what());
   }
@@ -158,28 +150,15 @@ void FixTDEMClump::insert_clumps() {
   const int nprev = atom->nlocal;
   bool top[3];
   for (int d = 0; d < 3; d++) top[d] = comm->myloc[d] == comm->procgrid[d] - 1 && !domain->periodicity[d];
-  int mycreated = 0;
-  for (const cl::NewSphere& s : spheres) {
+  const int created = static_cast<int>(cl::create_spheres(bodies_, atom, spheres, groupbit, world, [&](const cl::NewSphere& s) {
     double xw[3] = {s.x[0], s.x[1], s.x[2]};
     tagint img = (static_cast<tagint>(IMGMAX) << IMG2BITS) | (static_cast<tagint>(IMGMAX) << IMGBITS) | IMGMAX;
     domain->remap(xw, img);
-    if (!cl::owns_point(xw, domain->sublo, domain->subhi, top)) continue;
+    if (!cl::owns_point(xw, domain->sublo, domain->subhi, top)) return -1;
     atom->avec->create_atom(args_.insert_type, xw);
-    const int i = atom->nlocal - 1;
-    atom->tag[i] = static_cast<int>(s.tag);
-    atom->molecule[i] = static_cast<int>(s.mol);
-    atom->image[i] = img;
-    atom->mask[i] |= groupbit;
-    atom->radius[i] = bodies_.tmpl().body[s.sphere].r;
-    atom->rmass[i] = bodies_.sphere_mass()[s.sphere];
-    for (int d = 0; d < 3; d++) {
-      atom->v[i][d] = s.v[d];
-      atom->omega[i][d] = 0.0;
-    }
-    mycreated++;
-  }
-  int created = 0;
-  MPI_Allreduce(&mycreated, &created, 1, MPI_INT, MPI_SUM, world);
+    atom->image[atom->nlocal - 1] = img;
+    return atom->nlocal - 1;
+  }));
   if (created != static_cast<int>(spheres.size()))
     fail(where_ + ": insert: " + std::to_string(created) + " spheres created instead of " +
          std::to_string(spheres.size()) + " (a sphere outside every subdomain: is region " + rname +
@@ -297,17 +276,7 @@ void FixTDEMClump::reset_dt() {}
 
 // owned spheres from their bodies: x (if positions, with the image flags), v, omega
 void FixTDEMClump::set_spheres(bool positions) {
-  const double prd[3] = {domain->xprd, domain->yprd, domain->zprd};
-  const tagint* image = atom->image;
-  bodies_.set_spheres(
-      atom->nlocal, atom->x, atom->v, atom->omega, prd,
-      [image](int i, int* box) {
-        const tagint img = image[i];
-        box[0] = static_cast<int>(img & IMGMASK) - IMGMAX;
-        box[1] = static_cast<int>(img >> IMGBITS & IMGMASK) - IMGMAX;
-        box[2] = static_cast<int>(img >> IMG2BITS) - IMGMAX;
-      },
-      positions);
+  cl::set_spheres(bodies_, atom, domain->prd, {IMGMASK, IMGBITS, IMG2BITS, IMGMAX}, positions);
 }
 
 void FixTDEMClump::initial_integrate(int) {
@@ -355,27 +324,27 @@ void* FixTDEMClump::extract(const char* name, int& dim) {
 
 /* ---------------------------------------------------------------------- restart */
 
+namespace {
+constexpr double kRestartMagic = 20261130.0;
+}  // namespace
+
 // magic, nbody, nsph, formed, have_force, then per body: mol, x, v, q, L, F, T, nsph tags
+// (clump_host.h)
 void FixTDEMClump::write_restart(FILE* fp) {
-  if (comm->me != 0) return;
-  std::vector<double> buf = {kRestartMagic, static_cast<double>(bodies_.size()), static_cast<double>(bodies_.nsph()),
-                             formed_ ? 1.0 : 0.0, have_force_ ? 1.0 : 0.0};
-  bodies_.pack(buf, true);
-  const int size = static_cast<int>(buf.size() * sizeof(double));
-  fwrite(&size, sizeof(int), 1, fp);
-  fwrite(buf.data(), sizeof(double), buf.size(), fp);
+  if (comm->me == 0)
+    cl::write_restart_record(fp, bodies_, kRestartMagic, {formed_ ? 1.0 : 0.0, have_force_ ? 1.0 : 0.0}, true);
 }
 
 void FixTDEMClump::restart(char* raw) {
-  const double* buf = reinterpret_cast<const double*>(raw);
-  if (buf[0] != kRestartMagic) fail(where_ + ": the restart record is not a tdem/clump record of this version");
-  formed_ = buf[3] != 0.0;
-  have_force_ = buf[4] != 0.0;
+  double flags[2] = {0.0, 0.0};
   try {
-    bodies_.unpack(buf + 5, static_cast<int>(buf[1]), static_cast<int>(buf[2]), true);
+    cl::read_restart_record(raw, bodies_, kRestartMagic, flags, 2, true,
+                            where_ + ": the restart record is not a tdem/clump record of this version");
   } catch (const std::exception& e) {
     fail(e.what());
   }
+  formed_ = flags[0] != 0.0;
+  have_force_ = flags[1] != 0.0;
   size_array_rows = static_cast<int>(bodies_.size());
   restarted_ = true;
   log(where_ + ": " + std::to_string(bodies_.size()) + " bodies read from the restart file\n");

@@ -28,7 +28,7 @@ FixTDEMGrate::~FixTDEMGrate()
 {
   atom->delete_callback(id, Atom::GROW);
   atom->delete_callback(id, Atom::RESTART);
-  memory->destroy(mass_rigid);
+  rigid.destroy(memory);
   extlist = nullptr;  // owned by extlist_store
 }
 
@@ -59,12 +59,7 @@ void FixTDEMGrate::init()
   rebase_time();
   if (utils::strmatch(update->integrate_style, "^respa"))
     nlevels_respa = ((Respa *) update->integrate)->nlevels;
-  fix_rigid = nullptr;
-  for (int i = 0; i < modify->nfix; i++)
-    if (modify->fix[i]->rigid_flag) {
-      fix_rigid = modify->fix[i];
-      break;
-    }
+  rigid.find(modify);
 }
 
 void FixTDEMGrate::reset_dt()
@@ -74,13 +69,7 @@ void FixTDEMGrate::reset_dt()
 
 void FixTDEMGrate::setup(int vflag)
 {
-  if (utils::strmatch(update->integrate_style, "^verlet"))
-    post_force(vflag);
-  else {
-    ((Respa *) update->integrate)->copy_flevel_f(nlevels_respa - 1);
-    post_force_respa(vflag, nlevels_respa - 1, 0);
-    ((Respa *) update->integrate)->copy_f_flevel(nlevels_respa - 1);
-  }
+  tdem_lammps::setup_post_force(this, update, vflag, nlevels_respa);
 }
 
 void FixTDEMGrate::write_vtk(double t)
@@ -103,19 +92,8 @@ struct GrateRunner {
 
 void FixTDEMGrate::post_force(int /*vflag*/)
 {
-  if (fix_rigid) {
-    // effective mass of a sphere of a rigid body: the body mass (as fix wall/gran)
-    int tmp;
-    int *body = (int *) fix_rigid->extract("body", tmp);
-    double *mass_body = (double *) fix_rigid->extract("masstotal", tmp);
-    if (atom->nmax > nmax_rigid) {
-      memory->destroy(mass_rigid);
-      nmax_rigid = atom->nmax;
-      memory->create(mass_rigid, nmax_rigid, "tdem/grate:mass_rigid");
-    }
-    for (int i = 0; i < atom->nlocal; i++)
-      mass_rigid[i] = (body && mass_body && body[i] >= 0) ? mass_body[body[i]] : 0.0;
-  }
+  // effective mass of a sphere of a rigid body: the body mass (as fix wall/gran)
+  rigid.refresh(atom, memory, "tdem/grate:mass_rigid");
 
   const double t = current_time();
   t_last = t;
@@ -157,15 +135,7 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
   const bool history_update = !update->setupflag;
   const double dt = update->dt;
 
-  double **x = atom->x;
-  double **v = atom->v;
-  double **f = atom->f;
-  double **omg = atom->omega;
-  double **torque = atom->torque;
-  double *radius = atom->radius;
-  double *rmass = atom->rmass;
-  int *mask = atom->mask;
-  const int nlocal = atom->nlocal;
+  const auto [x, v, f, omg, torque, radius, rmass, mask, nlocal] = tdem_lammps::sphere_arrays(atom);
   const int nbox = static_cast<int>(boxes_.size());
   // bounding box of the whole grate; the axes tested first are the non-periodic ones
   double all_lo[3], all_hi[3];
@@ -314,8 +284,7 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
       }
 
     if (accepted.empty()) continue;
-    double meff = rmass[i];
-    if (fix_rigid && mass_rigid && mass_rigid[i] > 0.0) meff = mass_rigid[i];
+    const double meff = rigid.of(i, rmass[i]);
 
     // ---- forces, one contact per accepted box (a plane wall moving with the box)
     for (int acc : accepted) {
@@ -345,21 +314,11 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
                                                  c.overlap, vr1, vr2, vr3, wr1, wr2, wr3, dt,
                                                  history_update, shear, ccel, fs, rad, 0.0, omg[i],
                                                  nullptr);
-      const double fx = dx * ccel + fs[0];
-      const double fy = dy * ccel + fs[1];
-      const double fz = dz * ccel + fs[2];
-      f[i][0] += fx;
-      f[i][1] += fy;
-      f[i][2] += fz;
-      fbar[0] -= fx;
-      fbar[1] -= fy;
-      fbar[2] -= fz;
-      const double tor1 = rinv * (dy * fs[2] - dz * fs[1]);
-      const double tor2 = rinv * (dz * fs[0] - dx * fs[2]);
-      const double tor3 = rinv * (dx * fs[1] - dy * fs[0]);
-      torque[i][0] -= rad * tor1;
-      torque[i][1] -= rad * tor2;
-      torque[i][2] -= rad * tor3;
+      double fw[3];
+      tdem_lammps::add_wall_force(f[i], torque[i], dx, dy, dz, ccel, fs, rinv, rad, fw);
+      fbar[0] -= fw[0];
+      fbar[1] -= fw[1];
+      fbar[2] -= fw[2];
     }
   }
 }
@@ -395,7 +354,7 @@ void *FixTDEMGrate::extract(const char *name, int &dim)
 
 double FixTDEMGrate::memory_usage()
 {
-  return rows_memory() + (double) nmax_rigid * sizeof(double);
+  return rows_memory() + rigid.memory_usage();
 }
 
 void FixTDEMGrate::set_arrays(int i)

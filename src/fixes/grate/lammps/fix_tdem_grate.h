@@ -30,6 +30,7 @@ FixStyle(tdem/grate,FixTDEMGrate);
 #include "pair_styles/per_atom_rows.h"
 #include "fixes/grate/geometry.h"
 #include "tdem_lammps_law.h"
+#include "contact_host.h"
 
 #include <memory>
 #include <string>
@@ -95,9 +96,7 @@ class FixTDEMGrate : public tdem::host::PerAtomRows<Fix> {
   int force_flag;
   std::vector<int> extlist_store;
 
-  class Fix *fix_rigid;
-  double *mass_rigid;
-  int nmax_rigid;
+  tdem_lammps::RigidMasses rigid;  // body masses of the spheres of rigid bodies
   bigint ndeep;  // evaluations with the sphere centre inside a box (reported once)
 };
 

@@ -54,7 +54,7 @@ bool parse_int(const char *s, long &v)
 /* ---------------------------------------------------------------------- */
 
 FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
-    PerAtomRows(lmp, narg, arg), fix_rigid(nullptr), mass_rigid(nullptr)
+    PerAtomRows(lmp, narg, arg)
 {
   where = std::string("fix ") + id + " tdem/grate";
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag)
@@ -64,7 +64,6 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
   restart_peratom = 1;
   restart_global = 1;
   nlevels_respa = 0;
-  nmax_rigid = 0;
   ndeep = 0;
   per_axis = -1;
   per_len = 0.0;

@@ -6,14 +6,7 @@
 
 namespace tdem_lammps {
 
-const StyleEntry *grate_styles()
-{
-  static const StyleEntry table[] = {
-      {StyleKind::fix, "tdem/grate",
-       "tdem fix style tdem/grate (stepped grate of fixed and moving bar rows, tdem laws)",
-       (void *) &create_fix<LAMMPS_NS::FixTDEMGrate>},
-      {}};
-  return table;
-}
+TDEM_LAMMPS_MODULE(grate_styles, fix_entry<LAMMPS_NS::FixTDEMGrate>("tdem/grate",
+                                    "tdem fix style tdem/grate (stepped grate of fixed and moving bar rows, tdem laws)"))
 
 }  // namespace tdem_lammps

@@ -8,16 +8,9 @@
 
 namespace tdem_lammps {
 
-const StyleEntry *mixing_styles()
-{
-  static const StyleEntry table[] = {
-      {StyleKind::compute, "tdem/mixing/velocity",
-       "tdem compute style tdem/mixing/velocity (velocity-based mixing P')",
-       (void *) &create_compute<LAMMPS_NS::ComputeTDEMMixingVelocity>},
-      {StyleKind::fix, "tdem/mixing/depth", "tdem fix style tdem/mixing/depth (trajectory-based mixing D, Q')",
-       (void *) &create_fix<LAMMPS_NS::FixTDEMMixingDepth>},
-      {}};
-  return table;
-}
+TDEM_LAMMPS_MODULE(mixing_styles, compute_entry<LAMMPS_NS::ComputeTDEMMixingVelocity>(
+                       "tdem/mixing/velocity", "tdem compute style tdem/mixing/velocity (velocity-based mixing P')"),
+                   fix_entry<LAMMPS_NS::FixTDEMMixingDepth>(
+                       "tdem/mixing/depth", "tdem fix style tdem/mixing/depth (trajectory-based mixing D, Q')"))
 
 }  // namespace tdem_lammps

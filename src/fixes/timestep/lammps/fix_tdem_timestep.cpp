@@ -30,11 +30,9 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 namespace ta = tdem::advice;
 namespace th = tdem::advice::host;
-namespace ti = tdem::integrators;
 
 namespace {
 
-constexpr double BIG = std::numeric_limits<double>::max();
 
 // The law of a tdem type pair (or wall: reff = sphere radius) as the two functions of a row.
 void law_row(const tdem_lammps::LawCoeffs &c, th::Row &r)
@@ -116,10 +114,10 @@ bool has_material(int mode)
 /* ---------------------------------------------------------------------- */
 
 FixTDEMTimestep::FixTDEMTimestep(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), scheme(ti::Scheme::velocity_verlet), runtime_warned(false)
+    Fix(lmp, narg, arg)
 {
   try {
-    opt = th::parse_options(narg, arg, 3);
+    st.opt = th::parse_options(narg, arg, 3);
   } catch (const std::exception &e) {
     error->all(FLERR, fmt::format("fix {} tdem/timestep: {}", id, e.what()));
   }
@@ -129,14 +127,12 @@ FixTDEMTimestep::FixTDEMTimestep(LAMMPS *lmp, int narg, char **arg) :
   size_vector = 3;
   global_freq = 1;
   extvector = 0;
-  nevery = opt.every > 0 ? static_cast<int>(opt.every) : 1;
-  vec[0] = vec[1] = vec[2] = 0.0;
-  last_step = -1;
+  nevery = st.opt.every > 0 ? static_cast<int>(st.opt.every) : 1;
 }
 
 int FixTDEMTimestep::setmask()
 {
-  return opt.every > 0 ? END_OF_STEP : 0;
+  return st.opt.every > 0 ? END_OF_STEP : 0;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -144,7 +140,7 @@ int FixTDEMTimestep::setmask()
 void FixTDEMTimestep::init()
 {
   // the scheme: `scheme`, else the one of a fix tdem/integrate on the group, else nve/sphere
-  scheme = th::scheme_in_use<FixTDEMIntegrate>(opt, modify);
+  st.scheme = th::scheme_in_use<FixTDEMIntegrate>(st.opt, modify);
 }
 
 /* ---------------------------------------------------------------------- */
@@ -153,11 +149,10 @@ void FixTDEMTimestep::init()
 
 void FixTDEMTimestep::build_rows(double v_setup)
 {
-  rows.clear();
+  st.rows.clear();
   const int nt = atom->ntypes;
-  std::vector<double> mmin, rmin, rhomin;
-  th::type_minima(world, atom, groupbit, mmin, rmin, rhomin);
-  auto present = [&](int t) { return mmin[t] < BIG && rmin[t] < BIG; };
+  const th::TypeMinima tm = th::type_minima(world, atom, groupbit);
+  const std::vector<double> &rmin = tm.r, &rhomin = tm.rho;
 
   // the pair style
   Pair *pair = force->pair;
@@ -186,12 +181,8 @@ void FixTDEMTimestep::build_rows(double v_setup)
   if (tp || stock_hooke || stock_hertz) {
     for (int i = 1; i <= nt; i++)
       for (int j = i; j <= nt; j++) {
-        if (!present(i) || !present(j)) continue;
-        th::Row r;
-        r.what = fmt::format("pair {} {}", i, j);
-        r.itype = i, r.jtype = j;
-        r.meff = mmin[i] * mmin[j] / (mmin[i] + mmin[j]);
-        r.reff = rmin[i] * rmin[j] / (rmin[i] + rmin[j]);
+        if (!tm.present(i) || !tm.present(j)) continue;
+        th::Row r = tm.pair_row(i, j);
         if (tp) {
           const tdem_lammps::LawCoeffs &c = tp->law_of(i, j);
           law_row(c, r);
@@ -221,7 +212,7 @@ void FixTDEMTimestep::build_rows(double v_setup)
             return true;
           };
         }
-        rows.push_back(r);
+        st.rows.push_back(r);
       }
   }
 
@@ -235,24 +226,20 @@ void FixTDEMTimestep::build_rows(double v_setup)
                                           id, modify->fix[k]->id, modify->fix[k]->style));
       continue;
     }
-    std::vector<double> wm, wr, wrho;
-    th::type_minima(world, atom, groupbit | w->groupbit, wm, wr, wrho);
+    const th::TypeMinima wtm = th::type_minima(world, atom, groupbit | w->groupbit);
+    const std::vector<double> &wr = wtm.r, &wrho = wtm.rho;
     const tdem_lammps::LawCoeffs &c = w->wall_law();
     for (int t = 1; t <= nt; t++) {
-      if (!(wm[t] < BIG)) continue;
-      th::Row r;
-      r.what = fmt::format("wall {} type {}", w->id, t);
-      r.itype = t, r.jtype = 0;
-      r.meff = wm[t];
-      r.reff = wr[t];
+      if (!wtm.present(t)) continue;
+      th::Row r = wtm.wall_row(w->id, t);
       law_row(c, r);
       if (has_material(c.mode)) r.material = ta::Material{wr[t], wrho[t], c.E1, c.nu1};
-      rows.push_back(r);
+      st.rows.push_back(r);
     }
   }
 
-  th::advise_rows(rows, v_setup, scheme, update->dt);
-  for (const th::Row &r : rows)
+  th::advise_rows(st.rows, v_setup, st.scheme, update->dt);
+  for (const th::Row &r : st.rows)
     if (!r.supported && comm->me == 0)
       error->warning(FLERR, fmt::format("fix {} tdem/timestep: the law of {} ({}) is not supported; no advice",
                                         id, r.what, r.law));
@@ -262,15 +249,13 @@ void FixTDEMTimestep::build_rows(double v_setup)
 
 void FixTDEMTimestep::setup(int)
 {
-  runtime_warned = false;
-  const th::SetupSpeed v = th::setup_speed(opt, opt.vmax_given ? 0.0 : th::largest_speed(world, atom, groupbit));
+  const th::SetupSpeed v = th::setup_speed(st.opt, st.opt.vmax_given ? 0.0 : th::largest_speed(world, atom, groupbit));
   build_rows(v.v);
-  const th::SetupReport rep = th::setup_report(rows, opt, scheme, update->dt, v, where());
-  if (comm->me == 0) utils::logmesg(lmp, rep.log);
-  std::copy(rep.vec, rep.vec + 3, vec);
-  last_step = update->ntimestep;
-  if (comm->me == 0)
+  const th::SetupReport rep = st.setup(update->dt, v, update->ntimestep, where());
+  if (comm->me == 0) {
+    utils::logmesg(lmp, rep.log);
     for (const std::string &w : rep.warnings) error->warning(FLERR, w);
+  }
   if (!rep.stop.empty()) error->all(FLERR, rep.stop);
 }
 
@@ -278,17 +263,12 @@ void FixTDEMTimestep::setup(int)
 
 void FixTDEMTimestep::run_check(const char *when)
 {
-  const double speed = th::largest_speed(world, atom, groupbit);
-  const std::vector<double> xi =
-      th::largest_overlaps(world, atom, force->pair ? force->pair->list : nullptr, groupbit, NEIGHMASK);
-  const th::RuntimeReport rep =
-      th::runtime_report(rows, speed, xi, atom->ntypes, scheme, update->dt, opt, when, update->ntimestep, where());
-  std::copy(rep.vec, rep.vec + 3, vec);
-  last_step = update->ntimestep;
+  const th::RuntimeReport rep = st.recheck(
+      th::largest_speed(world, atom, groupbit),
+      th::largest_overlaps(world, atom, force->pair ? force->pair->list : nullptr, groupbit, NEIGHMASK), atom->ntypes,
+      update->dt, when, update->ntimestep, where());
   if (rep.action == th::Action::stop) error->all(FLERR, rep.message);
-  if (rep.action == th::Action::warn && !runtime_warned && comm->me == 0)
-    error->warning(FLERR, rep.message + " (warned once per run)");
-  if (rep.action != th::Action::none) runtime_warned = true;
+  if (rep.action == th::Action::warn && comm->me == 0) error->warning(FLERR, rep.message + " (warned once per run)");
 }
 
 std::string FixTDEMTimestep::where() const
@@ -303,6 +283,6 @@ void FixTDEMTimestep::end_of_step()
 
 double FixTDEMTimestep::compute_vector(int n)
 {
-  if (update->ntimestep != last_step) run_check(nullptr);
-  return vec[n];
+  if (update->ntimestep != st.last_step) run_check(nullptr);
+  return st.vec[n];
 }

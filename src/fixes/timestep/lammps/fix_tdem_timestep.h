@@ -41,12 +41,7 @@ class FixTDEMTimestep : public Fix {
   double compute_vector(int) override;
 
  private:
-  tdem::advice::host::Options opt;
-  tdem::integrators::Scheme scheme;
-  std::vector<tdem::advice::host::Row> rows;
-  double vec[3];
-  bool runtime_warned;
-  bigint last_step;  // step of the values in vec
+  tdem::advice::host::FixState st;  // options, scheme, rows, vector (shared with LIGGGHTS)
 
   void build_rows(double v_setup);
   void run_check(const char *when);

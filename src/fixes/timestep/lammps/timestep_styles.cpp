@@ -6,13 +6,6 @@
 
 namespace tdem_lammps {
 
-const StyleEntry *timestep_styles()
-{
-  static const StyleEntry table[] = {
-      {StyleKind::fix, "tdem/timestep", "tdem fix style tdem/timestep (time-step advice and check)",
-       (void *) &create_fix<LAMMPS_NS::FixTDEMTimestep>},
-      {}};
-  return table;
-}
+TDEM_LAMMPS_MODULE(timestep_styles, fix_entry<LAMMPS_NS::FixTDEMTimestep>("tdem/timestep", "tdem fix style tdem/timestep (time-step advice and check)"))
 
 }  // namespace tdem_lammps

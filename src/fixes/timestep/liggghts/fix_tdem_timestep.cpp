@@ -37,11 +37,9 @@ using namespace LAMMPS_NS;
 using namespace FixConst;
 namespace ta = tdem::advice;
 namespace th = tdem::advice::host;
-namespace ti = tdem::integrators;
 
 namespace {
 
-constexpr double kBig = std::numeric_limits<double>::max();
 
 // The tdem normal laws: lsd, hertz, the units of src/contact/laws.h, then the rest.
 const std::vector<std::string>& tdem_laws() {
@@ -110,10 +108,10 @@ bool hertz_type(const std::string& model) {
 /* ---------------------------------------------------------------------- */
 
 FixTDEMTimestep::FixTDEMTimestep(LAMMPS* lmp, int narg, char** arg)
-    : Fix(lmp, narg, arg), scheme_(ti::Scheme::velocity_verlet), runtime_warned_(false), last_step_(-1),
+    : Fix(lmp, narg, arg),
       natoms_(0), watch_every_step_(false) {
   try {
-    opt_ = th::parse_options(narg, arg, 3);
+    st_.opt = th::parse_options(narg, arg, 3);
   } catch (const std::exception& e) {
     error->all(FLERR, (std::string("fix ") + id + " tdem/timestep: " + e.what()).c_str());
   }
@@ -124,10 +122,9 @@ FixTDEMTimestep::FixTDEMTimestep(LAMMPS* lmp, int narg, char** arg)
   global_freq = 1;
   extvector = 0;
   nevery = 1;  // the run-time check keeps its own cadence (every); the lost-atom watch may need each step
-  vec_[0] = vec_[1] = vec_[2] = 0.0;
 }
 
-int FixTDEMTimestep::setmask() { return opt_.every > 0 || opt_.check != th::CheckMode::off ? END_OF_STEP : 0; }
+int FixTDEMTimestep::setmask() { return st_.opt.every > 0 || st_.opt.check != th::CheckMode::off ? END_OF_STEP : 0; }
 
 void FixTDEMTimestep::say(const std::string& s) {
   if (comm->me != 0) return;
@@ -137,7 +134,7 @@ void FixTDEMTimestep::say(const std::string& s) {
 
 /* ---------------------------------------------------------------------- */
 
-void FixTDEMTimestep::init() { scheme_ = th::scheme_in_use<FixTDEMIntegrate>(opt_, modify); }
+void FixTDEMTimestep::init() { st_.scheme = th::scheme_in_use<FixTDEMIntegrate>(st_.opt, modify); }
 
 /* ---------------------------------------------------------------------- properties */
 
@@ -354,11 +351,10 @@ void FixTDEMTimestep::law_row(const std::string& model, int i, int j, th::Row& r
 /* ---------------------------------------------------------------------- rows */
 
 void FixTDEMTimestep::build_rows(double v_setup) {
-  rows_.clear();
+  st_.rows.clear();
   const int nt = atom->ntypes;
-  std::vector<double> mmin, rmin, rhomin;
-  th::type_minima(world, atom, groupbit, mmin, rmin, rhomin);
-  auto present = [&](int t) { return mmin[t] < kBig && rmin[t] < kBig; };
+  const th::TypeMinima tm = th::type_minima(world, atom, groupbit);
+  const std::vector<double> &rmin = tm.r, &rhomin = tm.rho;
   auto material = [&](int t, int mt, double r, double rho) {
     bool fE, fn;
     const double E = type_prop("youngsModulus", mt, fE), nu = type_prop("poissonsRatio", mt, fn);
@@ -375,12 +371,8 @@ void FixTDEMTimestep::build_rows(double v_setup) {
     const std::string model = model_of(pg);
     for (int i = 1; i <= nt; i++)
       for (int j = i; j <= nt; j++) {
-        if (!present(i) || !present(j)) continue;
-        th::Row r;
-        r.what = "pair " + std::to_string(i) + " " + std::to_string(j);
-        r.itype = i, r.jtype = j;
-        r.meff = mmin[i] * mmin[j] / (mmin[i] + mmin[j]);
-        r.reff = rmin[i] * rmin[j] / (rmin[i] + rmin[j]);
+        if (!tm.present(i) || !tm.present(j)) continue;
+        th::Row r = tm.pair_row(i, j);
         if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(pg), i, j, false, rmin[i] + rmin[j], r))
           law_row(model, i, j, r);
         if (hertz_type(model)) {
@@ -393,32 +385,28 @@ void FixTDEMTimestep::build_rows(double v_setup) {
             }
           }
         }
-        rows_.push_back(r);
+        st_.rows.push_back(r);
       }
   }
   for (int k = 0; k < modify->nfix; k++) {
     FixWallGran* w = dynamic_cast<FixWallGran*>(modify->fix[k]);
     if (!w) continue;
-    std::vector<double> wm, wr, wrho;
-    th::type_minima(world, atom, groupbit | w->groupbit, wm, wr, wrho);
+    const th::TypeMinima wtm = th::type_minima(world, atom, groupbit | w->groupbit);
+    const std::vector<double> &wr = wtm.r, &wrho = wtm.rho;
     const std::string model = model_of(w);
     const int wt = w->atom_type_wall();
     for (int t = 1; t <= nt; t++) {
-      if (!(wm[t] < kBig)) continue;
-      th::Row r;
-      r.what = std::string("wall ") + w->id + " type " + std::to_string(t);
-      r.itype = t, r.jtype = 0;
-      r.meff = wm[t];
-      r.reff = wr[t];
+      if (!wtm.present(t)) continue;
+      th::Row r = wtm.wall_row(w->id, t);
       const int partner = wt >= 1 && wt <= nt ? wt : t;
       if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(w), t, partner, true, wr[t], r))
         law_row(model, t, partner, r);
       if (hertz_type(model)) r.material = material(t, t, wr[t], wrho[t]);
-      rows_.push_back(r);
+      st_.rows.push_back(r);
     }
   }
-  th::advise_rows(rows_, v_setup, scheme_, update->dt);
-  for (const th::Row& r : rows_)
+  th::advise_rows(st_.rows, v_setup, st_.scheme, update->dt);
+  for (const th::Row& r : st_.rows)
     if (!r.supported)
       warnings.push_back("the law of " + r.what + " (" + r.law +
                          ") is not supported (supported: the tdem normal laws " + tdem_law_list() +
@@ -430,16 +418,13 @@ void FixTDEMTimestep::build_rows(double v_setup) {
 /* ---------------------------------------------------------------------- set-up and run */
 
 void FixTDEMTimestep::setup(int) {
-  runtime_warned_ = false;
-  const th::SetupSpeed v = th::setup_speed(opt_, opt_.vmax_given ? 0.0 : th::largest_speed(world, atom, groupbit));
+  const th::SetupSpeed v = th::setup_speed(st_.opt, st_.opt.vmax_given ? 0.0 : th::largest_speed(world, atom, groupbit));
   build_rows(v.v);
-  const th::SetupReport rep = th::setup_report(rows_, opt_, scheme_, update->dt, v, where());
+  const th::SetupReport rep = st_.setup(update->dt, v, static_cast<long long>(update->ntimestep), where());
   say(rep.log);
-  std::copy(rep.vec, rep.vec + 3, vec_);
-  last_step_ = update->ntimestep;
   natoms_ = group->count(igroup);
-  watch_every_step_ = opt_.check != th::CheckMode::off && !rep.unstable.empty();
-  unstable_ = opt_.check != th::CheckMode::off ? rep.unstable : std::string();
+  watch_every_step_ = st_.opt.check != th::CheckMode::off && !rep.unstable.empty();
+  unstable_ = st_.opt.check != th::CheckMode::off ? rep.unstable : std::string();
   if (comm->me == 0)
     for (const std::string& w : rep.warnings) error->warning(FLERR, w.c_str());
   if (!rep.stop.empty()) error->all(FLERR, rep.stop.c_str());
@@ -463,38 +448,30 @@ void FixTDEMTimestep::lost_check() {
 }
 
 void FixTDEMTimestep::run_check(const char* when) {
-  const double speed = th::largest_speed(world, atom, groupbit);
-  const std::vector<double> xi =
-      th::largest_overlaps(world, atom, force->pair ? force->pair->list : nullptr, groupbit, NEIGHMASK);
-  const th::RuntimeReport rep = th::runtime_report(rows_, speed, xi, atom->ntypes, scheme_, update->dt, opt_, when,
-                                                   static_cast<long long>(update->ntimestep), where());
-  std::copy(rep.vec, rep.vec + 3, vec_);
-  last_step_ = update->ntimestep;
+  const th::RuntimeReport rep =
+      st_.recheck(th::largest_speed(world, atom, groupbit),
+                  th::largest_overlaps(world, atom, force->pair ? force->pair->list : nullptr, groupbit, NEIGHMASK),
+                  atom->ntypes, update->dt, when, static_cast<long long>(update->ntimestep), where());
   if (rep.action == th::Action::stop) error->all(FLERR, rep.message.c_str());
-  if (rep.action == th::Action::warn && !runtime_warned_ && comm->me == 0)
+  if (rep.action == th::Action::warn && comm->me == 0)
     error->warning(FLERR, (rep.message + " (warned once per run)").c_str());
-  if (rep.action != th::Action::none) runtime_warned_ = true;
 }
 
 std::string FixTDEMTimestep::where() const { return std::string("fix ") + id + " tdem/timestep"; }
 
 void FixTDEMTimestep::end_of_step() {
-  const bool periodic = opt_.every > 0 && update->ntimestep % opt_.every == 0;
-  if (opt_.check != th::CheckMode::off && (watch_every_step_ || periodic)) lost_check();
+  const bool periodic = st_.opt.every > 0 && update->ntimestep % st_.opt.every == 0;
+  if (st_.opt.check != th::CheckMode::off && (watch_every_step_ || periodic)) lost_check();
   if (periodic) run_check("run-time");
 }
 
 double FixTDEMTimestep::compute_vector(int n) {
-  if (update->ntimestep != last_step_) run_check(nullptr);
-  return vec_[n];
+  if (update->ntimestep != st_.last_step) run_check(nullptr);
+  return st_.vec[n];
 }
 
 /* ---------------------------------------------------------------------- registration */
 
-namespace tdem {
-namespace liggghts {
-void register_timestep_fix(LAMMPS_NS::LAMMPS* lmp) {
+void tdem::liggghts::register_timestep_fix(LAMMPS_NS::LAMMPS* lmp) {
   add_fix_style(lmp, "tdem/timestep", &create_fix<FixTDEMTimestep>);
 }
-}  // namespace liggghts
-}  // namespace tdem

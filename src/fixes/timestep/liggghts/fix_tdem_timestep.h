@@ -40,12 +40,7 @@ class FixTDEMTimestep : public Fix {
   double compute_vector(int);
 
  private:
-  tdem::advice::host::Options opt_;
-  tdem::integrators::Scheme scheme_;
-  std::vector<tdem::advice::host::Row> rows_;
-  double vec_[3];
-  bool runtime_warned_;
-  bigint last_step_;
+  tdem::advice::host::FixState st_;  // options, scheme, rows, vector (shared with LAMMPS)
   // LIGGGHTS deletes atoms that leave the box without an error (thermo_modify lost ignore): the
   // fix counts the group at set-up and, when the step is beyond the stop fraction of dt_c, every
   // step (else at the run-time check), and stops with the advice once atoms are gone
@@ -69,6 +64,13 @@ class FixTDEMTimestep : public Fix {
 };
 
 }  // namespace LAMMPS_NS
+
+namespace tdem {
+namespace liggghts {
+// Adds `fix tdem/timestep` to this LIGGGHTS instance's fix styles (timestep_register.cpp).
+void register_timestep_fix(LAMMPS_NS::LAMMPS* lmp);
+}  // namespace liggghts
+}  // namespace tdem
 
 #endif
 #endif
