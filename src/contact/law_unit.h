@@ -31,6 +31,11 @@
 //   static double contact_time_estimate(const Params&, double meff, double reff, double v0);
 //                                                            // the step of an integrated impact
 //
+// Optional: a unit that declares
+//   static void fit_guess(const law::FitHint&, double* own);  // starting values of its own values
+// is fitted to impact data by tdem-fit (src/drivers/fit/fit_unit.h) with no further edit: every
+// own value is a fitted parameter, the materials come from the data.
+//
 // The list of units is src/contact/laws.h (normal_units). The hosts take a unit through the
 // templates below (visit by name or by description), and store its Params type-erased in a
 // ParamStore, so that a law added to that list is parsed, checked, evaluated, restarted and
@@ -76,6 +81,17 @@ struct ParamStore {
     return p;
   }
 };
+
+// What tdem-fit knows of the data when it asks a unit for starting values (fit_guess): the pair
+// (E* from the data's materials), the median impact velocity and its restitution (< 1), the median
+// contact time (NaN without contact-time data).
+struct FitHint {
+  double estar, meff, reff, v_ref, e_ref, tc_ref;
+};
+template <class U, class = void>
+struct HasFitGuess : std::false_type {};
+template <class U>
+struct HasFitGuess<U, std::void_t<decltype(&U::fit_guess)>> : std::true_type {};
 
 // The largest number of expanded values of a unit (materials E1 NU1 E2 NU2 + the law's own).
 inline constexpr int MAX_UNIT_VALUES = 12;

@@ -36,8 +36,8 @@ def expect(name, cond, detail=""):
         failures.append(f"{name} {detail}")
 
 
-def collide(opts):
-    p = subprocess.run([args.collide] + opts.split(), capture_output=True, text=True, timeout=60)
+def collide(opts, extra=()):
+    p = subprocess.run([args.collide] + opts.split() + list(extra), capture_output=True, text=True, timeout=60)
     if p.returncode != 0:
         failures.append(f"tdem-collide {opts}: exit {p.returncode}: {p.stderr}")
         return None
@@ -308,6 +308,37 @@ for name, data, what in (
     p = subprocess.run([args.exe, path], capture_output=True, text=True, errors="replace", timeout=60)
     expect(f"{name}: exit 2 and '{what}'", p.returncode == 2 and what in p.stderr, p.stderr.strip()[:200])
     print("     " + p.stderr.strip()[:200])
+
+# ---- 7. a unit law with fit_guess (src/drivers/fit/fit_unit.h): Luding's law, glass pair, e and t_c
+# from tdem-collide over both branches (below and beyond the plastic flow limit); the fit returns
+# the three values, and --help lists the law
+K1, K2MAX, PHIF = 2.0e6, 8.0e6, 0.002
+rows = []
+for v in velocities:
+    r = collide(f"--law luding --R1 0.005 --rho 2500 --R2 0.005 --v0 {v}", ["--params", f"{K1} {K2MAX} {PHIF}"])
+    if r:
+        rows.append((v, r["e"], r["contact_time"]))
+path = write_csv("luding.csv", ["# material: synthetic (Luding)", "# configuration: pair", "# R1: 0.005",
+                                "# rho: 2500", "# E: 7e10", "# nu: 0.25"], ["v0", "e", "tc"], rows)
+j, out = fit(path, "--law luding,walton_braun_constant")
+if j:
+    l = law(j, "luding")
+    check("luding K1", coef(l, "K1"), K1, 1e-3)
+    check("luding K2MAX", coef(l, "K2MAX"), K2MAX, 1e-3)
+    check("luding PHIF", coef(l, "PHIF"), PHIF, 1e-3)
+    expect("luding chi2 ~ 0", l["chi2"] < 1e-10, f"chi2 = {l['chi2']}")
+    expect("best law (chi2) is luding", j["best_chi2"] == "luding", j["best_chi2"])
+    lmp = [s for s in l["lammps"] if s.startswith("pair_coeff")]
+    expect("luding LAMMPS pair_coeff line printed", len(lmp) == 1, str(l["lammps"]))
+    if lmp:
+        vals = numbers_after(lmp[0], "luding", 3)
+        for name, got, want in zip(("K1", "K2MAX", "PHIF"), vals, (K1, K2MAX, PHIF)):
+            check("luding LAMMPS line " + name, got, want, 1e-3)
+    expect("luding LIGGGHTS pair_style line", "pair_style gran model tdem/luding tangential tdem/cundall_strack"
+           in l["liggghts"], str(l["liggghts"]))
+h = subprocess.run([args.exe, "--help"], capture_output=True, text=True)
+expect("--help lists the unit luding", re.search(r"^  luding +unit .*\(K1 K2MAX PHIF\)$", h.stdout, re.M) is not None,
+       h.stdout[-600:])
 
 if failures:
     print("\nFAILURES:")

@@ -26,6 +26,7 @@
 //                e = w B / v0, t_c = sqrt(m*/k1) asin(xi_lim/A) + (pi - asin((xi_lim - xi_0)/B)) / w
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "../input_checks.h"
@@ -165,6 +166,24 @@ struct Law {
   }
   static double contact_time_estimate(const Params& p, double meff, double, double) {
     return M_PI * std::sqrt(meff / p.k1);
+  }
+  // tdem-fit's starting values: k1 from the median contact time (t_c = pi/2 sqrt(m*/k1) (1 + e)
+  // below the limit) or, without one, from the Hertz peak overlap at v_ref; k2 = k1/e^2 reached
+  // at the median impact below the limit, with k2_max = 2 k2
+  static void fit_guess(const law::FitHint& h, double* own) {
+    const double e = std::min(std::max(h.e_ref, 0.05), 0.99), m = h.meff, v = h.v_ref;
+    double k1;
+    if (std::isfinite(h.tc_ref)) {
+      k1 = m * std::pow(M_PI * (1.0 + e) / (2.0 * h.tc_ref), 2);
+    } else {
+      const double xi = std::pow(15.0 * m * v * v / (16.0 * h.estar * std::sqrt(h.reff)), 0.4);
+      k1 = m * v * v / (xi * xi);
+    }
+    const double k2 = k1 / (e * e), k2_max = 2.0 * k2;
+    const double xl = v * std::sqrt(m / k1) * (k2_max - k1) / (k2 - k1);  // A / xl = (k2 - k1)/(k2_max - k1)
+    own[0] = k1;
+    own[1] = k2_max;
+    own[2] = xl * (k2_max - k1) / (k2_max * 2.0 * h.reff);
   }
 };
 

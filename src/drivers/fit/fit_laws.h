@@ -11,7 +11,8 @@
 // problem (e.g. the power law's a_ul through the restitution at the reference velocity); the
 // law coefficients are derived from them in coefficients().
 //
-// The laws: fit_lsd_hertz.h, fit_hysteretic.h, fit_extended.h (on fit_law.h); this file is their list.
+// The laws: fit_lsd_hertz.h, fit_hysteretic.h, fit_extended.h (on fit_law.h); this file is their list,
+// followed by every unit of src/contact/laws.h that declares fit_guess (fit_unit.h).
 #pragma once
 
 #include <memory>
@@ -22,6 +23,7 @@
 #include "fit_hysteretic.h"
 #include "fit_law.h"
 #include "fit_lsd_hertz.h"
+#include "fit_unit.h"
 
 namespace tdem {
 namespace fitting {
@@ -38,7 +40,31 @@ inline const std::vector<std::string>& law_names() {
                                              "power_law",
                                              "extended_linear",
                                              "extended_hertz"};
-  return n;
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> v = n;
+    law::for_each<law::normal_units>([&](auto tag) {
+      using U = typename decltype(tag)::type;
+      if constexpr (fitted_as_unit<U>) v.push_back(U::description.name);
+    });
+    return v;
+  }();
+  return all;
+}
+
+// The units of law_names() (fit_unit.h): "  NAME   unit: VALUES fitted" lines of the --help text.
+inline std::string unit_help() {
+  std::string out;
+  law::for_each<law::normal_units>([&](auto tag) {
+    using U = typename decltype(tag)::type;
+    if constexpr (fitted_as_unit<U>) {
+      std::string name = U::description.name;
+      name.resize(std::max<std::size_t>(name.size() + 1, 30), ' ');
+      std::string what = "unit (src/contact/laws.h)";
+      what.resize(40, ' ');
+      out += "  " + name + what + "(" + law::syntax(U::description) + ")\n";
+    }
+  });
+  return out;
 }
 
 inline std::unique_ptr<FitLaw> make_law(const std::string& name, const Context& c) {
@@ -53,7 +79,12 @@ inline std::unique_ptr<FitLaw> make_law(const std::string& name, const Context& 
   if (name == "power_law") return std::make_unique<PowerLawFit>(c);
   if (name == "extended_linear") return std::make_unique<ExtendedLinearFit>(c);
   if (name == "extended_hertz") return std::make_unique<ExtendedHertzFit>(c);
-  return nullptr;
+  std::unique_ptr<FitLaw> unit;
+  law::visit<law::normal_units>(law::index_of<law::normal_units>(name.c_str()), [&](auto tag) {
+    using U = typename decltype(tag)::type;
+    if constexpr (fitted_as_unit<U>) unit = std::make_unique<UnitFit<U>>(c);
+  });
+  return unit;
 }
 
 }  // namespace fitting

@@ -28,7 +28,9 @@ Laws (--law, default all):
   power_law                     p = 1.5, a_l = Hertz k~                 (a_ul, q)
   extended_linear               rational e(v0); power t_c(v0) if t_c data, else Hertz t_c
   extended_hertz                Hertz spring, rational e(v0)
-
+)";
+// then the units (fit_laws.h: unit_help), then
+const char* kHelpOptions = R"(
 Options:
   --json FILE         write all results (and the curves of --curve) as JSON to FILE
   --steps N           RK4 steps per estimated contact time, 100 ... 1e6 (default 2000)

@@ -269,6 +269,8 @@ int main(int argc, char** argv) {
     o = parse_args(argc, argv);
     if (o.help) {
       std::fputs(kHelp, stdout);
+      std::fputs(unit_help().c_str(), stdout);
+      std::fputs(kHelpOptions, stdout);
       return 0;
     }
     const auto data = fitdata::read(o.file);
