@@ -13,7 +13,8 @@
 #     lammps_compat.h, ...): LAMMPS's build compiles every src/*.cpp and registers every style
 #     header with a PairStyle/FixStyle/ComputeStyle block;
 #   - tdem's host-free headers under their own paths (contact/, collision/, fixes/,
-#     integrators/), as the styles include them ("contact/normal/hertz_damped.h");
+#     integrators/, pair_styles/*.h), as the styles include them ("contact/normal/hertz_damped.h",
+#     "pair_styles/per_atom_rows.h");
 #   - tdem_lammps_features.h, the API features of this tree (the compile checks of tdem's build).
 # A list of the copied files is kept in LAMMPS_TREE/src/tdem_dropin_files.txt.
 set -euo pipefail
@@ -29,7 +30,7 @@ list="$dst/tdem_dropin_files.txt"
 
 if [ -f "$list" ]; then  # remove what an earlier run copied
   while IFS= read -r f; do rm -f "$dst/$f"; done <"$list"
-  for d in contact collision fixes integrators; do
+  for d in contact collision fixes integrators pair_styles; do
     [ -d "$dst/$d" ] && find "$dst/$d" -depth -type d -empty -delete
   done
   rm -f "$list"
@@ -52,8 +53,8 @@ for f in "$here"/src/pair_styles/lammps/*.{h,cpp} "$here"/src/integrators/lammps
 done
 # 2. the host-free headers, under their paths ("contact/normal/hertz_damped.h",
 #    "fixes/grate/geometry.h"); the hosts' adapters went flat in step 1
-(cd "$here/src" && find contact collision fixes integrators -name '*.h' \
-   -not -path '*/liggghts/*' -not -path '*/lammps/*' -not -path '*/hosts/*') | while IFS= read -r rel; do copy "$here/src/$rel" "$rel"; done
+(cd "$here/src" && { find contact collision fixes integrators -name '*.h' \
+   -not -path '*/liggghts/*' -not -path '*/lammps/*' -not -path '*/hosts/*'; ls pair_styles/*.h; }) | while IFS= read -r rel; do copy "$here/src/$rel" "$rel"; done
 # 3. the API features of this LAMMPS tree
 tmp="$(mktemp -d)"
 if ! cmake -S "$here/tools/lammps_features" -B "$tmp" -DLAMMPS_HEADER_DIR="$dst" \
