@@ -10,6 +10,14 @@ bash "$here/tools/setup.sh" --lammps "20250204 20260704"
 t1=$(date +%s)
 build_dir="${TDEM_BUILD_DIR:-$here/build}"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+# ctest starts the longest tests first when it knows their cost: on a build that has not run the
+# suite yet, seed its cost file from the times measured on 2 cores (tests/test_costs.txt, written by
+# tools/test_costs.sh), so that the long sweeps do not end up alone at the tail of the run.
+costs="$build_dir/Testing/Temporary/CTestCostData.txt"
+if [ ! -s "$costs" ] && [ -f "$here/tests/test_costs.txt" ]; then
+  mkdir -p "$(dirname "$costs")"
+  { grep -v '^#' "$here/tests/test_costs.txt" | awk 'NF == 2 {print $2, 1, $1}'; echo "---"; } > "$costs"
+fi
 rc=0
 ctest --test-dir "$build_dir" -j "${TDEM_JOBS:-$(nproc)}" --output-on-failure --timeout 900 "$@" || rc=$?
 t2=$(date +%s)
