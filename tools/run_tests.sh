@@ -12,7 +12,8 @@ build_dir="${TDEM_BUILD_DIR:-$here/build}"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
 # ctest starts the longest tests first when it knows their cost: on a build that has not run the
 # suite yet, seed its cost file from the times measured on 2 cores (tests/test_costs.txt, written by
-# tools/test_costs.sh), so that the long sweeps do not end up alone at the tail of the run.
+# tools/test_costs.sh), so that the long suites start first (the tests that take both cores still run
+# one at a time when the machine has two).
 costs="$build_dir/Testing/Temporary/CTestCostData.txt"
 if [ ! -s "$costs" ] && [ -f "$here/tests/test_costs.txt" ]; then
   mkdir -p "$(dirname "$costs")"
