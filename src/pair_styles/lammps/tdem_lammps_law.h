@@ -307,9 +307,9 @@ TDEM_KERNEL void unit_normal(const LawCoeffs &c, double meff, double overlap, do
   kin.reff = U::needs_reff ? (radj > 0.0 ? radi * radj / (radi + radj) : radi) : 0.0;
   const auto &p = c.up.as<typename U::Params>();
   const auto res = U::force(p, kin, h, update);
-  ccel = res.force * rinv;
-  kn_used = res.stiffness, gn_used = res.damping;
   kt = c.kappa * U::tangential_basis(p, res, kin);
+  kn_used = res.stiffness, gn_used = res.damping;
+  ccel = res.force * rinv;
 }
 
 template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK, int D = -1>
