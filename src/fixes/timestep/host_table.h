@@ -422,8 +422,8 @@ struct TypeMinima {
     Row w;
     w.what = "pair " + std::to_string(i) + " " + std::to_string(j);
     w.itype = i, w.jtype = j;
-    w.meff = m[i] * m[j] / (m[i] + m[j]);
-    w.reff = r[i] * r[j] / (r[i] + r[j]);
+    w.meff = hertz::effective_mass(m[i], m[j]);
+    w.reff = hertz::effective_radius(r[i], r[j]);
     return w;
   }
   // The row of type t against wall `wall` (a flat wall: the sphere's mass and radius).

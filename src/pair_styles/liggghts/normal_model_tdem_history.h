@@ -197,7 +197,6 @@ class TdemHistoryNormalModel : public NormalModelBase {
         .unit = tdem::law::index_of<tdem::law::normal_units>(&U::description);
   }
 
-
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   tdem::liggghts::PairTable<Coefficients> coef_;
   int history_offset_ = 0;

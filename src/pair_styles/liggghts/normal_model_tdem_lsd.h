@@ -256,7 +256,6 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
                       });
   }
 
-
  private:
   const void* advice_owner_ = nullptr;  // IContactHistorySetup* of the owner (advice registry key)
   struct PairCoefficients {

@@ -91,7 +91,8 @@ inline const char* on_off(bool b) { return b ? "on" : "off"; }
 // Returns the published entry.
 template <class Table, class Fill>
 Entry& publish_table(const void* owner, const void* model, Law law, std::string name, ContactEnd end,
-                   std::string settings, const Table& table, Fill fill, hertz::Damping damping = hertz::Damping::tsuji) {
+                     std::string settings, const Table& table, Fill fill,
+                     hertz::Damping damping = hertz::Damping::tsuji) {
   Entry e;
   e.model = model;
   e.law = law;
