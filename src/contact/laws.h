@@ -9,12 +9,18 @@
 // src/pair_styles/liggghts/tdem_liggghts_units.h).
 //
 // The laws with keyword forms (lsd stiffness|restitution, hertz with its damping members, the
-// extended laws with their fits, tangential cundall_strack) are not in the lists yet: their hosts
-// parse them by hand.
+// extended laws with their fits) describe their input too, with keyword groups; every normal law
+// is named once in all_normal_laws, and the hosts read every input line through law_input.h.
+// Their kernels run on paths of their own in the hosts (lsd's is bitwise gran/hooke/history).
 #pragma once
 
+#include "law_input.h"
 #include "law_parameters.h"
 #include "law_unit.h"
+#include "normal/extended.h"
+#include "normal/hertz_damped.h"
+#include "normal/linear_viscoelastic.h"
+#include "tangential/cundall_strack.h"
 #include "normal/luding.h"
 #include "normal/power_law_hysteresis.h"
 #include "normal/thornton.h"
@@ -38,7 +44,19 @@ using normal_units = Units<walton_braun::Law, thornton::Law, power_law::Law, lud
 // Their descriptions.
 inline constexpr const auto& normal_laws = normal_units::descriptions;
 
-// The tangential laws other than cundall_strack (whose forms depend on the normal law).
+// Every normal law of the hosts' input lines, in the order of their "allowed:" lists: lsd, hertz,
+// the units, the extended laws.
+template <class L>
+struct AllNormal;
+template <class... U>
+struct AllNormal<Units<U...>> {
+  static constexpr const Description* list[] = {&lsd::description, &hertz::description, &U::description...,
+                                                &extended::linear_description, &extended::hertz_description};
+};
+inline constexpr const auto& all_normal_laws = AllNormal<normal_units>::list;
+
+// The tangential laws other than cundall_strack (whose two forms, cundall_strack::
+// stiffness_description and ratio_description, depend on the normal law).
 inline constexpr const Description* tangential_laws[] = {
     &haff_werner::description,         &linear_spring::description,   &walton_braun_tangential::description,
     &mindlin_deresiewicz::description, &mindlin_no_slip::description, &di_renzo::description,

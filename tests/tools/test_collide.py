@@ -179,6 +179,41 @@ j = collide("--law power_law --params 1e7,1.5,4e7 --m1 0.01 --wall --v0 1")
 if j:
     check("power_law --params e", j["e"], (1e7 / 4e7) ** (1 / 3.0), 1e-6)
 
+# ---- --params for the laws with keyword forms (lsd, hertz, the extended laws): their pair_coeff
+# input line, read by the same description as the hosts read it; the same closed forms as above
+k, g, m = 1e5, 4.48097, 0.01
+w0, d = math.sqrt(k / m), g / (2 * m)
+w = math.sqrt(w0 * w0 - d * d)
+j = collide(f"--law lsd --params stiffness,{k},{g / m} --m1 {m} --wall --v0 1")  # GAMMAN per m*
+if j:
+    check("lsd --params stiffness e", j["e"], math.exp(-d * math.pi / w), 1e-6)
+    check("lsd --params stiffness t_c", j["contact_time"], math.pi / w, 1e-6)
+j = collide("--law lsd --params restitution,0.8,1e-3 --m1 0.01 --wall --v0 1 --end zero_overlap")
+if j:
+    check("lsd --params restitution e", j["e"], 0.8, 1e-6)
+    check("lsd --params restitution t_c", j["contact_time"], 1e-3, 1e-6)
+j = collide(f"--law hertz --params {E},{nu} --R1 {R} --rho {rho} --wall --v0 1")
+if j:
+    xi = (5 * mh * 1.0 / (4 * kh)) ** 0.4
+    check("hertz --params E NU xi_max", j["max_overlap"], xi, 1e-5)
+    check("hertz --params E NU t_c", j["contact_time"], C * xi, 1e-5)
+j = collide(f"--law hertz --params {E},{nu},{E},{nu},damping,tsuji,0.7 --R1 {R} --rho {rho} --wall --v0 1 "
+            "--steps 20000")
+if j:
+    check("hertz --params damping tsuji 0.7 e", j["e"], 0.7, 1e-5)
+j = collide("--law extended_linear --params e_fit,constant,0.7,tc_fit,constant,1e-3 --m1 0.01 --wall --v0 2")
+if j:
+    check("extended_linear --params e", j["e"], 0.7, 1e-6)
+    check("extended_linear --params t_c", j["contact_time"], 1e-3, 1e-6)
+j = collide("--law extended_linear --params e_fit,power,0.5,0.2,tc_fit,constant,1e-3,v_max,1 --m1 0.01 --wall "
+            "--v0 2")
+if j:  # v0 = 2 clamped to v_max = 1: e = (1/0.5)^-0.2
+    check("extended_linear --params v_max clamps e", j["e"], 2.0 ** -0.2, 1e-6)
+j = collide(f"--law extended_hertz --params {E},{nu},e_fit,power,0.5,0.2 --R1 {R} --rho {rho} --wall --v0 1 "
+            "--steps 20000")
+if j:
+    check("extended_hertz --params e = (v0/C0)^-C1", j["e"], 2.0 ** -0.2, 1e-5)
+
 # ---- continuous potential: conservative, closest approach as asked
 j = collide("--law continuous_potential --R1 0.005 --m1 0.01 --wall --x-min 0.00499 --v0 1")
 if j:
@@ -325,6 +360,16 @@ bad = [
     ("--law luding --params 1e5,1e5,0.05 --m1 0.01 --R1 0.005 --wall --v0 1", "k2_max"),
     ("--law luding --params 1e5,5e5,0.05 --m1 0.01 --wall --v0 1", "--R1"),
     ("--law lsd --params 1e5,1 --m1 0.01 --wall --v0 1", "--params"),
+    ("--law lsd --params stiffness,1e5 --m1 0.01 --wall --v0 1",
+     "--params: normal lsd stiffness needs 2 values (KN GAMMAN), got 1"),
+    ("--law hertz --params 2e11,0.3,damping,viscous,1 --R1 0.005 --m1 0.01 --wall --v0 1",
+     "normal hertz damping 'viscous' is unknown; allowed: linear GAMMA"),
+    ("--law hertz --params 2e11,0.3 --m1 0.01 --wall --v0 1", "--R1"),
+    ("--law extended_hertz --params 1e9,0.3,e_fit,constant,0.5,tc_fit,constant,1e-3 --R1 0.005 --m1 0.01 --wall "
+     "--v0 1", "normal extended_hertz takes no tc_fit"),
+    ("--law extended_linear --params e_fit,constant,0.5,tc_fit,constant,1e-3,v_min,2,v_max,1 --m1 0.01 --wall --v0 1",
+     "largest impact velocity v_max = 1 is outside the allowed range [v_min, inf)"),
+    ("--law continuous_potential --params 1,2 --R1 0.005 --m1 0.01 --wall --v0 1", "--params"),
     ("--law walton_braun --params 1e5,2e5 --kl 1e5 --m1 0.01 --wall --v0 1", "--kl"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --steps 0", "--steps"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --steps 2.5", "--steps"),

@@ -25,6 +25,7 @@
 #include "../kinematics.h"
 #include "hertz_damped.h"
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "linear_viscoelastic.h"
 #include "velocity_fits.h"
 
@@ -161,6 +162,80 @@ inline NormalResult<T> hertz_force(ContactEnd end, const HertzParams& p, const N
 
 inline double hertz_restitution(const HertzParams& p, double v0) {
   return fits::restitution(p.e_fit, p.range, v0);
+}
+
+// ---------------------------------------------------------------- input
+//   normal extended_linear e_fit FORM C.. tc_fit FORM C.. [v_min V] [v_max V]
+//   normal extended_hertz E NU [E2 NU2] e_fit FORM C.. [v_min V] [v_max V]
+// (FORM and its coefficients: velocity_fits.h). In the expanded values each fit is its choice
+// index and three coefficients; fit_of() turns them back into a fits::Fit.
+inline constexpr law::Parameter c0[] = {{"C0", "fit coefficient", "", law::Bound::any}};
+inline constexpr law::Parameter c01[] = {{"C0", "fit coefficient", "", law::Bound::any},
+                                         {"C1", "fit coefficient", "", law::Bound::any}};
+inline constexpr law::Parameter c012[] = {{"C0", "fit coefficient", "", law::Bound::any},
+                                          {"C1", "fit coefficient", "", law::Bound::any},
+                                          {"C2", "fit coefficient", "", law::Bound::any}};
+inline constexpr law::Choice e_forms[] = {{"constant", c0, 1}, {"rational", c012, 3}, {"power", c01, 2}};
+inline constexpr law::Choice tc_forms[] = {{"constant", c0, 1}, {"power", c01, 2}};
+inline constexpr law::Parameter v_min_value[] = {
+    {"V", "smallest impact velocity", "m/s", law::Bound::any, -1, true, fits::Range().v_min}};
+inline constexpr law::Parameter v_max_value[] = {
+    {"V", "largest impact velocity", "m/s", law::Bound::any, -1, true, fits::Range().v_max}};
+inline constexpr law::Choice v_min_choice[] = {{nullptr, v_min_value, 1}};
+inline constexpr law::Choice v_max_choice[] = {{nullptr, v_max_value, 1}};
+
+// The fit of a group's values (choice index, C0, C1, C2) of the form list `forms`.
+template <int N>
+inline fits::Fit fit_of(const law::Choice (&forms)[N], const double* v) {
+  fits::Fit f;
+  const int c = static_cast<int>(v[0]);
+  fits::parse(forms[c >= 0 && c < N ? c : 0].word, f.form);
+  for (int k = 0; k < forms[c >= 0 && c < N ? c : 0].count; ++k) f.c[k] = v[1 + k];
+  return f;
+}
+inline void check_e_fit(int c, const double* v) {
+  fits::Fit f;
+  fits::parse(e_forms[c].word, f.form);
+  for (int k = 0; k < e_forms[c].count; ++k) f.c[k] = v[k];
+  fits::validate_restitution(f);
+}
+inline void check_tc_fit(int c, const double* v) {
+  fits::Fit f;
+  fits::parse(tc_forms[c].word, f.form);
+  for (int k = 0; k < tc_forms[c].count; ++k) f.c[k] = v[k];
+  fits::validate_contact_time(f);
+}
+
+inline constexpr law::Group e_fit_group = {"e_fit", "form", true, true, e_forms, 3, true, nullptr, check_e_fit};
+inline constexpr law::Group tc_fit_group = {"tc_fit", "form", true, true, tc_forms, 2, true, nullptr, check_tc_fit};
+inline constexpr law::Group v_min_group = {"v_min", "", false, false, v_min_choice, 1, true, "impact velocity", nullptr};
+inline constexpr law::Group v_max_group = {"v_max", "", false, false, v_max_choice, 1, true, "impact velocity", nullptr};
+inline constexpr law::Group linear_groups[] = {e_fit_group, tc_fit_group, v_min_group, v_max_group};
+inline constexpr law::Group hertz_groups[] = {e_fit_group, v_min_group, v_max_group};
+inline constexpr law::Refusal hertz_refusals[] = {{"tc_fit", "its contact time follows from Hertz"}};
+inline constexpr law::Description linear_description =
+    law::describe("normal", "extended_linear", false, linear_groups, linear_history, linear_history_size);
+inline constexpr law::Description hertz_description = law::describe(
+    "normal", "extended_hertz", true, hertz_groups, hertz_history, hertz_history_size, hertz_refusals, 1);
+
+// The parameters of extended_linear from its expanded values, and the fits and range of
+// extended_hertz from its values after the four materials.
+inline LinearParams linear_params(const double* v) {
+  LinearParams p;
+  p.e_fit = fit_of(e_forms, v);
+  p.tc_fit = fit_of(tc_forms, v + 4);
+  p.range.v_min = v[7];
+  p.range.v_max = v[8];
+  return p;
+}
+inline LinearParams hertz_fits(const double* v) {
+  LinearParams p;
+  p.e_fit = fit_of(e_forms, v);
+  p.tc_fit.form = fits::Form::constant;  // no contact-time fit: a valid placeholder
+  p.tc_fit.c[0] = 1.0;
+  p.range.v_min = v[4];
+  p.range.v_max = v[5];
+  return p;
 }
 
 }  // namespace extended

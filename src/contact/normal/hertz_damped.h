@@ -25,6 +25,7 @@
 
 #include "../kinematics.h"
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "../material.h"
 #include "linear_viscoelastic.h"
 
@@ -196,6 +197,23 @@ template <class T>
 inline T tsuji_alpha_zero_overlap(T log_e) noexcept {
   return -std::sqrt(T(5)) * log_e / std::sqrt(log_e * log_e + T(M_PI) * T(M_PI));
 }
+
+// ---------------------------------------------------------------- input
+// `normal hertz E NU [E2 NU2] [damping linear GAMMA | kuwabara_kono GAMMA | tsuji E | general
+// THETA C]` (default: linear 0, the elastic law). The choice index is the Damping member.
+inline constexpr law::Parameter damping_gamma[] = {{"GAMMA", "damping coefficient", "", law::Bound::non_negative}};
+inline constexpr law::Parameter damping_tsuji[] = {{"E", "coefficient of restitution", "1", law::Bound::restitution}};
+inline constexpr law::Parameter damping_general[] = {
+    {"THETA", "exponent of the overlap", "1", law::Bound::non_negative},
+    {"C", "damping coefficient", "", law::Bound::non_negative},
+};
+inline constexpr law::Choice damping_members[] = {
+    {"linear", damping_gamma, 1}, {"kuwabara_kono", damping_gamma, 1}, {"tsuji", damping_tsuji, 1},
+    {"general", damping_general, 2}};
+static_assert(static_cast<int>(Damping::general) == 3, "the choices follow Damping");
+inline constexpr law::Group groups[] = {
+    {"damping", "member", false, false, damping_members, 4, true, nullptr, nullptr}};
+inline constexpr law::Description description = law::describe("normal", "hertz", true, groups, nullptr, 0);
 
 }  // namespace hertz
 }  // namespace tdem

@@ -19,6 +19,7 @@
 #include <string>
 
 #include "../kinematics.h"
+#include "../law_parameters.h"
 
 namespace tdem {
 
@@ -208,6 +209,25 @@ inline double max_overlap(const Coefficients<double>& c, double meff, double v0)
   }
   throw std::domain_error("max_overlap: only the under-damped case is implemented");
 }
+
+// ---------------------------------------------------------------- input
+// `normal lsd stiffness KN GAMMAN | restitution E TC`: the first word chooses the form (the
+// expanded values: the choice, then its two values). The stiffness form's GAMMAN is per unit
+// effective mass unless the host's `damping absolute` says otherwise (gran/hooke/history).
+inline constexpr law::Parameter stiffness_values[] = {
+    {"KN", "normal stiffness", "N/m", law::Bound::positive},
+    {"GAMMAN", "normal damping (per unit effective mass, 1/s; with damping absolute kg/s)", "1/s",
+     law::Bound::non_negative},
+};
+inline constexpr law::Parameter restitution_values[] = {
+    {"E", "coefficient of restitution", "1", law::Bound::restitution},
+    {"TC", "contact time", "s", law::Bound::positive, -1, false, 0.0, true},
+};
+inline constexpr law::Choice forms[] = {{"stiffness", stiffness_values, 2}, {"restitution", restitution_values, 2}};
+enum Form { form_stiffness = 0, form_restitution = 1 };
+inline constexpr law::Group groups[] = {
+    {"", "parametrisation", true, true, forms, 2, false, nullptr, nullptr}};
+inline constexpr law::Description description = law::describe("normal", "lsd", false, groups, nullptr, 0);
 
 }  // namespace lsd
 }  // namespace tdem

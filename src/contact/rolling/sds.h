@@ -23,6 +23,7 @@
 #include <cmath>
 
 #include "../kinematics.h"
+#include "../law_parameters.h"
 
 namespace tdem {
 namespace rolling_sds {
@@ -78,6 +79,15 @@ TDEM_KERNEL void torque(const Params<T>& p, const T* n, T reff, const T* wi, con
   torque_i[1] = reff * (n[2] * f0 - n[0] * f2);
   torque_i[2] = reff * (n[0] * f1 - n[1] * f0);
 }
+
+// The input `rolling sds KR GAMMAR MUR`.
+inline constexpr law::Parameter parameters[] = {
+    {"KR", "rolling stiffness", "N/m", law::Bound::positive},
+    {"GAMMAR", "rolling damping", "kg/s", law::Bound::non_negative},
+    {"MUR", "rolling friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description description = {"rolling", "sds", false, parameters, 3, history, history_size,
+                                                 false, nullptr, 0, nullptr, 0, true};
 
 }  // namespace rolling_sds
 }  // namespace tdem

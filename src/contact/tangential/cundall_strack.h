@@ -20,6 +20,7 @@
 #include <cmath>
 
 #include "../kinematics.h"
+#include "../law_parameters.h"
 
 namespace tdem {
 namespace cundall_strack {
@@ -126,6 +127,26 @@ inline void force(SlipRule rule, const Params<T>& p, const Kinematics<T>& kin, T
   else
     force<SlipRule::spring_dashpot_cap>(p, kin, fn, update, shear, ft);
 }
+
+// ---------------------------------------------------------------- input
+// Two forms, chosen by the normal law: `KT GAMMAT MU` with normal lsd stiffness (the values of
+// gran/hooke/history), `KAPPA MU` (k_t = KAPPA times the normal law's tangential basis) with
+// every other normal law.
+inline constexpr law::Parameter stiffness_values[] = {
+    {"KT", "tangential stiffness", "N/m", law::Bound::positive},
+    {"GAMMAT", "tangential damping (as GAMMAN)", "1/s", law::Bound::non_negative},
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Parameter ratio_values[] = {
+    {"KAPPA", "kt/kn", "1", law::Bound::positive, -1, false, 0.0, true},  // tangential/normal stiffness
+    {"MU", "friction coefficient", "1", law::Bound::non_negative},
+};
+inline constexpr law::Description stiffness_description = {
+    "tangential", "cundall_strack", false, stiffness_values, 3, history, history_size, false,
+    nullptr,      0,                nullptr, 0,            true};
+inline constexpr law::Description ratio_description = {
+    "tangential", "cundall_strack", false, ratio_values, 2, history, history_size, false,
+    nullptr,      0,                nullptr, 0,         true};
 
 }  // namespace cundall_strack
 }  // namespace tdem
