@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -131,10 +133,28 @@ inline void liggghts_lines(const Context& c, const LiggghtsSpec& s, HostLines& h
     L.push_back("fix wall all wall/gran " + model + " primitive type 2 zplane 0.0" + set);
 }
 
+// The law words "normal NAME ..." of a printed LAMMPS line, read back by the description of the
+// law (src/contact/law_input.h, the reader of pair tdem/gran): a line the host would refuse is a
+// defect of this program, not of the data.
+inline void check_lammps_law(const std::string& words) {
+  std::istringstream in(words);
+  std::vector<std::string> w;
+  for (std::string x; in >> x;) w.push_back(x);
+  const law::Description* d = w.size() >= 2 && w[0] == "normal" ? law::find(law::all_normal_laws, w[1].c_str()) : nullptr;
+  std::vector<const char*> p;
+  for (std::size_t k = 2; k < w.size(); ++k) p.push_back(w[k].c_str());
+  const law::Reading r = d ? law::read(*d, static_cast<int>(p.size()), p.data(), nullptr) : law::Reading();
+  if (!d || !r.ok() || r.next != static_cast<int>(p.size()))
+    throw std::logic_error("tdem-fit printed a LAMMPS law that pair tdem/gran would refuse: '" + words + "'" +
+                           (d && !r.ok() ? " (" + r.error + ")" : std::string()));
+}
+
 // normal_fit: the law words of the fitted contact; normal_11: of the sphere-sphere contact of
 // material 1 (wall data: not fitted, given so that the script runs).
 inline void lammps_lines(const Context& c, const std::string& normal_fit, const std::string& normal_11,
                          bool uses_limit_force, HostLines& h) {
+  check_lammps_law(normal_fit);
+  check_lammps_law(normal_11);
   auto& L = h.lammps;
   const std::string tang = " tangential cundall_strack " + num(c.kappa) + " " + num(c.mu) +
                            (uses_limit_force && c.end == ContactEnd::zero_force ? " limit_force yes" : "");
