@@ -47,15 +47,14 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
   ~NormalModel() { tdem::liggghts::advice::withdraw(advice_owner_, this); }
 
   void registerSettings(Settings& settings) {
+    // the damping members of normal hertz (src/contact/normal/hertz_damped.h), in Damping order
     tdem::liggghts::register_enum(lmp, settings, "model tdem/hertz", "damping", damping_word_,
-                                  {"linear", "kuwabara_kono", "tsuji", "general"}, TSUJI);
+                                  tdem::liggghts::choice_words(tdem::hertz::groups[0]), TSUJI);
     tdem::liggghts::register_on_off(lmp, settings, "model tdem/hertz", "limitForce", limit_force_, false);
   }
 
   void postSettings(IContactHistorySetup*, ContactModelBase*) {
-    static const tdem::hertz::Damping map[] = {tdem::hertz::Damping::linear, tdem::hertz::Damping::kuwabara_kono,
-                                               tdem::hertz::Damping::tsuji, tdem::hertz::Damping::general};
-    damping_ = map[damping_word_];
+    damping_ = static_cast<tdem::hertz::Damping>(damping_word_);  // the choice index is the member
     end_ = limit_force_ ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap;
   }
 

@@ -15,27 +15,37 @@
 #include <string>
 #include <vector>
 
+#include "contact/normal/extended.h"
 #include "contact/normal/velocity_fits.h"
 #include "error.h"
 #include "lammps.h"
 #include "tdem_liggghts_properties.h"
+#include "tdem_liggghts_settings.h"
 
 namespace tdem {
 namespace liggghts {
 
-// Words of the `restitutionFit` / `contactTimeFit` keywords, in the order of their indices.
+// Words of the `restitutionFit` / `contactTimeFit` keywords, in the order of their indices: the
+// forms of the laws' e_fit and tc_fit groups (src/contact/normal/extended.h), the words of
+// pair_coeff ... e_fit FORM in LAMMPS.
 inline const std::vector<std::string>& restitution_fit_words() {
-  static const std::vector<std::string> w = {"constant", "rational", "power"};
+  static const std::vector<std::string> w = choice_words(extended::e_fit_group);
   return w;
 }
 inline const std::vector<std::string>& contact_time_fit_words() {
-  static const std::vector<std::string> w = {"constant", "power"};
+  static const std::vector<std::string> w = choice_words(extended::tc_fit_group);
   return w;
 }
 inline fits::Form restitution_form(int index) {
-  return index == 0 ? fits::Form::constant : index == 1 ? fits::Form::rational : fits::Form::power;
+  fits::Form f = fits::Form::constant;
+  fits::parse(restitution_fit_words()[index], f);
+  return f;
 }
-inline fits::Form contact_time_form(int index) { return index == 0 ? fits::Form::constant : fits::Form::power; }
+inline fits::Form contact_time_form(int index) {
+  fits::Form f = fits::Form::constant;
+  fits::parse(contact_time_fit_words()[index], f);
+  return f;
+}
 
 // Per-type-pair coefficient matrices of one fit, connected through the registry.
 struct FitMatrices {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/law_parameters.h"
 #include "settings.h"
 
 namespace LAMMPS_NS {
@@ -29,6 +30,14 @@ namespace liggghts {
 // (Input::arg / Input::narg) and report the value as missing instead.
 void register_enum(LAMMPS_NS::LAMMPS* lmp, Settings& settings, const std::string& owner, const std::string& name,
                    int& target, const std::vector<std::string>& words, int default_index);
+
+// The words of a keyword group's choices (src/contact/law_parameters.h), in their order: the
+// LIGGGHTS setting that chooses among them takes the same words as the law's input line.
+inline std::vector<std::string> choice_words(const law::Group& g) {
+  std::vector<std::string> w;
+  for (int c = 0; c < g.choice_count; ++c) w.push_back(g.choices[c].word);
+  return w;
+}
 
 // Registers an on/off keyword like Settings::registerOnOff (and shared with models that use
 // registerOnOff for the same keyword), with an error message that lists the allowed values.
