@@ -17,6 +17,7 @@
 #include "law_input.h"
 #include "law_parameters.h"
 #include "law_unit.h"
+#include "normal/continuous_potential.h"
 #include "normal/extended.h"
 #include "normal/hertz_damped.h"
 #include "normal/linear_viscoelastic.h"
@@ -45,13 +46,14 @@ using normal_units = Units<walton_braun::Law, thornton::Law, power_law::Law, lud
 inline constexpr const auto& normal_laws = normal_units::descriptions;
 
 // Every normal law of the hosts' input lines, in the order of their "allowed:" lists: lsd, hertz,
-// the units, the extended laws.
+// the units, the extended laws, continuous_potential.
 template <class L>
 struct AllNormal;
 template <class... U>
 struct AllNormal<Units<U...>> {
   static constexpr const Description* list[] = {&lsd::description, &hertz::description, &U::description...,
-                                                &extended::linear_description, &extended::hertz_description};
+                                                &extended::linear_description, &extended::hertz_description,
+                                                &continuous_potential::description};
 };
 inline constexpr const auto& all_normal_laws = AllNormal<normal_units>::list;
 

@@ -214,6 +214,14 @@ j = collide(f"--law extended_hertz --params {E},{nu},e_fit,power,0.5,0.2 --R1 {R
 if j:
     check("extended_hertz --params e = (v0/C0)^-C1", j["e"], 2.0 ** -0.2, 1e-5)
 
+# --params of continuous_potential: EPS N GAMMA with d = X_cut = R1 (wall): conservative, closest
+# approach (d/X_min)^n = 1 + m* v0^2 / (2 eps) (the potential cut at d, physics_reference 2.2.1)
+j = collide("--law continuous_potential --params 2e-3,36,0 --R1 0.005 --m1 0.01 --wall --v0 1")
+if j:
+    check("continuous_potential --params e", j["e"], 1.0, 1e-9)
+    check("continuous_potential --params xi_max", j["max_overlap"], 0.005 * (1 - (1 + 0.01 / (2 * 2e-3)) ** (-1 / 36)),
+          1e-6)
+
 # ---- continuous potential: conservative, closest approach as asked
 j = collide("--law continuous_potential --R1 0.005 --m1 0.01 --wall --x-min 0.00499 --v0 1")
 if j:
@@ -369,7 +377,9 @@ bad = [
      "--v0 1", "normal extended_hertz takes no tc_fit"),
     ("--law extended_linear --params e_fit,constant,0.5,tc_fit,constant,1e-3,v_min,2,v_max,1 --m1 0.01 --wall --v0 1",
      "largest impact velocity v_max = 1 is outside the allowed range [v_min, inf)"),
-    ("--law continuous_potential --params 1,2 --R1 0.005 --m1 0.01 --wall --v0 1", "--params"),
+    ("--law continuous_potential --params 1,2 --R1 0.005 --m1 0.01 --wall --v0 1",
+     "--params: normal continuous_potential needs 3 values (EPS N GAMMA), got 2"),
+    ("--law continuous_potential --params 1e-3,36,0 --m1 0.01 --wall --v0 1", "--R1"),
     ("--law walton_braun --params 1e5,2e5 --kl 1e5 --m1 0.01 --wall --v0 1", "--kl"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --steps 0", "--steps"),
     ("--law lsd --k 1e5 --m1 0.01 --wall --v0 1 --steps 2.5", "--steps"),

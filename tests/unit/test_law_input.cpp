@@ -198,7 +198,7 @@ TEST(LawInput, OneListNamesEveryNormalLaw) {
   for (const law::Description* d : law::all_normal_laws) names += std::string(names.empty() ? "" : ", ") + d->name;
   std::string units;
   for (const law::Description* d : law::normal_laws) units += std::string(", ") + d->name;
-  EXPECT_EQ(names, "lsd, hertz" + units + ", extended_linear, extended_hertz");
+  EXPECT_EQ(names, "lsd, hertz" + units + ", extended_linear, extended_hertz, continuous_potential");
   for (const law::Description* d : law::all_normal_laws) {
     EXPECT_LE(law::all_values(*d), law::MAX_INPUT_VALUES) << d->name;
     EXPECT_STREQ(d->kind, "normal");

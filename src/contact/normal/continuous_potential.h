@@ -21,6 +21,7 @@
 
 #include "../kinematics.h"
 #include "../input_checks.h"
+#include "../law_parameters.h"
 #include "linear_viscoelastic.h"
 
 namespace tdem {
@@ -96,6 +97,26 @@ inline double energy_for_closest_approach(double x_min, double meff, double v0, 
   if (!(x_min > 0.0 && x_min < x_cut)) checks::fail("closest approach X_min", x_min, "(0, X_cut)");
   const double at_cut = std::isinf(x_cut) ? 0.0 : std::pow(d / x_cut, n);
   return 0.5 * meff * v0 * v0 / (std::pow(d / x_min, n) - at_cut);
+}
+
+// ---------------------------------------------------------------- input
+// The hosts' contact law `normal continuous_potential EPS N GAMMA`: d = R_i + R_j (R_i for a wall)
+// and X_cut = d per contact (the hosts evaluate touching pairs only: the force acts from geometric
+// touch on, as LIGGGHTS's model tdem/continuous_potential); LIGGGHTS reads the three values from
+// the per-type-pair properties of `properties`.
+inline constexpr law::Parameter parameters[] = {
+    {"EPS", "characteristic energy", "J", law::Bound::positive},
+    {"N", "potential exponent", "1", law::Bound::positive},
+    {"GAMMA", "damping coefficient", "kg/s", law::Bound::non_negative},
+};
+inline constexpr const char* properties[] = {"potentialEnergy", "potentialExponent", "dampingCoefficient"};
+inline constexpr law::Description description =
+    law::describe("normal", "continuous_potential", false, parameters, nullptr, 0);
+
+// The parameters of a contact at distance d = R_i + R_j (R_i for a wall) from the values EPS N GAMMA.
+template <class T>
+TDEM_KERNEL Params<T> at_contact(const double* v, T d) noexcept {
+  return Params<T>{T(v[0]), d, T(v[1]), d, T(v[2])};
 }
 
 }  // namespace continuous_potential

@@ -62,13 +62,14 @@ Laws and their parameters (coefficients, or measurable quantities):
   --law extended_hertz    Hertz spring (stiffness as hertz: --k | --Estar | --E --nu ...) with
                           Tsuji damping alpha(v0) from e(v0): --e-fit, --e-coef, --v-min, --v-max,
                           --e-min, --end as extended_linear
-  --params "WORDS"        for every law but continuous_potential: the law's input line as LAMMPS
+  --params "WORDS"        for every law: the law's input line as LAMMPS
                           `pair_coeff ... normal LAW WORDS` takes it, instead of the law's own
                           options (walton_braun KL KUL [S], thornton E NU [E2 NU2] PY, power_law
                           AL P AUL [Q], lsd stiffness KN GAMMAN | restitution E TC (GAMMAN per m*),
                           hertz E NU [E2 NU2] [damping linear G | kuwabara_kono G | tsuji E |
                           general THETA C], extended_linear e_fit FORM C.. tc_fit FORM C..
-                          [v_min V] [v_max V], extended_hertz E NU [E2 NU2] e_fit FORM C.. ...);
+                          [v_min V] [v_max V], extended_hertz E NU [E2 NU2] e_fit FORM C.. ...,
+                          continuous_potential EPS N GAMMA with d = X_cut = R1 + R2);
                           --end as limit_force
 
 Oblique impacts (any of --angle > 0, --spin != 0, --spin2 != 0, --tangential other than none;

@@ -21,11 +21,10 @@ void go(Run& run, Law& law, const Bodies& b, double v0, const collision::Options
   }
 }
 
-// The values of --law: every normal law of src/contact/laws.h, and continuous_potential.
+// The values of --law: every normal law of src/contact/laws.h.
 std::vector<std::string> law_names() {
   std::vector<std::string> laws;
   for (const tdem::law::Description* d : tdem::law::all_normal_laws) laws.push_back(d->name);
-  laws.push_back("continuous_potential");  // options of its own only (no input line in the hosts)
   return laws;
 }
 
@@ -61,7 +60,7 @@ std::vector<std::string> param_words(Args& a) {
   return w;
 }
 
-// --law lsd|hertz|extended_linear|extended_hertz --params "WORDS": the law's input line as
+// --law lsd|hertz|extended_linear|extended_hertz|continuous_potential --params "WORDS": the law's input line as
 // pair_coeff ... normal NAME <words> takes it (normal lsd stiffness KN GAMMAN: GAMMAN per unit
 // effective mass, as pair tdem/gran's default `damping mass`), read by its description
 // (src/contact/law_input.h); --end as the hosts' limit_force.
@@ -112,6 +111,17 @@ void run_described(Run& run, Args& a, const tdem::law::Description& d, const Bod
       extended::validate(law.p);
       predict(run, "e", [&] { return extended::linear_restitution(law.p, v0); });
       predict(run, "contact_time", [&] { return extended::linear_contact_time(law.p, v0); });
+      a.check_all_used(run.law);
+      go(run, law, b, v0, opt);
+    } else if (&d == &tdem::continuous_potential::description) {
+      // d = X_cut = R1 + R2 (R1 with --wall), as the hosts take them per contact
+      if (!(b.R1 > 0.0) || (!std::isinf(b.R2) && !(b.R2 > 0.0)))
+        throw BadInput("option --params of --law continuous_potential needs --R1 (and --R2 or --wall): d = R1 + R2");
+      collision::ContinuousPotentialLaw law;
+      law.end_mode = end;
+      law.p = tdem::continuous_potential::at_contact(r.v, std::isinf(b.R2) ? b.R1 : b.R1 + b.R2);
+      continuous_potential::validate(law.p);
+      P = {{"eps", law.p.eps}, {"n", law.p.n}, {"gamma", law.p.gamma}, {"d", law.p.d}};
       a.check_all_used(run.law);
       go(run, law, b, v0, opt);
     } else {  // extended_hertz

@@ -121,6 +121,7 @@ struct Row {
   bool supported = true;
   int itype = 0, jtype = 0;  // types (jtype = 0: a wall)
   double meff = 0.0, reff = 0.0;
+  double distance = 0.0;  // R_i + R_j of the row's spheres (a wall: R_i), continuous_potential's d
   Material material{};  // radius 0: not known
   std::function<Advice(const Input&)> advise;
   std::function<bool(double xi, double& k, double& c)> stiffness;
@@ -424,6 +425,7 @@ struct TypeMinima {
     w.itype = i, w.jtype = j;
     w.meff = hertz::effective_mass(m[i], m[j]);
     w.reff = hertz::effective_radius(r[i], r[j]);
+    w.distance = r[i] + r[j];
     return w;
   }
   // The row of type t against wall `wall` (a flat wall: the sphere's mass and radius).
@@ -433,6 +435,7 @@ struct TypeMinima {
     w.itype = t, w.jtype = 0;
     w.meff = m[t];
     w.reff = r[t];
+    w.distance = r[t];
     return w;
   }
 };

@@ -101,20 +101,18 @@ void store_normal(const tdem::law::Description &d, const double *v, LawCoeffs &c
   } else if (&d == &tdem::extended::linear_description) {
     c.mode = MODE_EXT_LINEAR;
     c.ext = tdem::extended::linear_params(v);
+  } else if (&d == &tdem::continuous_potential::description) {
+    c.mode = MODE_CONT_POT;  // EPS N GAMMA, kept with the values of the units
+    for (int k = 0; k < law::value_count(d); ++k) c.uv[k] = v[k];
   } else {
     store_described(d, v, c);
   }
 }
 
-// "walton_braun, thornton, power_law" (sep ", "), or with last = " and " before the last name.
-std::string unit_names(const char *sep, const char *last = nullptr) {
+// "lsd, hertz, walton_braun, ..." (sep ", "): every normal law of the list (src/contact/laws.h).
+std::string normal_law_names(const char *sep = ", ") {
   std::string s;
-  for (int k = 0; k < NormalUnits::size; ++k)
-    s += (k == 0 ? "" : last && k + 1 == NormalUnits::size ? last : sep) + std::string(NormalUnits::descriptions[k]->name);
-  return s;
-}
-const std::string &normal_law_names() {
-  static const std::string s = "lsd, hertz, " + unit_names(", ") + ", extended_linear, extended_hertz";
+  for (const tdem::law::Description *d : tdem::law::all_normal_laws) s += (s.empty() ? "" : sep) + std::string(d->name);
   return s;
 }
 
@@ -170,7 +168,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
   // ---- normal NAME ...: every law of the list, read by its description
   if (iarg >= narg || strcmp(arg[iarg], "normal") != 0)
     fail(lmp, where,
-         "expected 'normal lsd|hertz|" + unit_names("|") + "|extended_linear|extended_hertz ...' first, got '" +
+         "expected 'normal " + normal_law_names("|") + " ...' first, got '" +
              (iarg < narg ? arg[iarg] : "end of line") + "'");
   if (iarg + 1 >= narg) fail(lmp, where, "keyword 'normal' needs a law name; allowed: " + normal_law_names());
   const law::Description *nd = law::find(law::all_normal_laws, arg[iarg + 1]);

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LAMMPS: the normal laws lsd (tdem::lsd), hertz (tdem::hertz), extended_linear and
-// extended_hertz (tdem::extended), and every normal law that is a unit (src/contact/law_unit.h,
+// extended_hertz (tdem::extended), continuous_potential, and every normal law that is a unit (src/contact/law_unit.h,
 // listed in src/contact/laws.h: walton_braun, thornton, power_law)
 // with the Cundall-Strack tangential law (tdem::cundall_strack) or one of the tangential laws of
 // src/contact/tangential/ (haff_werner, linear_spring, walton_braun_tangential,
 // mindlin_deresiewicz, mindlin_no_slip, di_renzo), as used by pair tdem/gran and fix
 // tdem/wall/gran. With cundall_strack the lsd modes run on compile-time specialised paths
 // (M = LawMode 0..2, end and slip fixed too), the other laws on paths specialised for the law
-// (M = 3, 7, 8 and MODE_UNIT + k, end and slip read at run time); type pairs with different laws use the run-time
+// (M = 3, 7, 8, 9 and MODE_UNIT + k, end and slip read at run time); type pairs with different laws use the run-time
 // path (M = -1). The other tangential laws run on one path per law (TL fixed at compile time,
 // the normal law read at run time).
 //
@@ -59,6 +59,8 @@ enum LawMode : int {
                             // kt = KAPPA k(v0); history v0, k, gamma
   MODE_EXT_HERTZ = 8,       // normal extended_hertz E NU [E2 NU2] e_fit .. [v_min] [v_max];
                             // kt = KAPPA dF/dxi (Hertz tangent); history v0, alpha
+  MODE_CONT_POT = 9,        // normal continuous_potential EPS N GAMMA (in LawCoeffs::uv), d =
+                            // X_cut = R_i + R_j (a wall: R_i); kt = KAPPA dF/dxi
   MODE_UNIT = 16            // MODE_UNIT + k: the k-th law of tdem::law::normal_units, with its
                             // input line, kt = KAPPA * its tangential basis and its history slots
 };
@@ -210,7 +212,8 @@ struct LawCoeffs {
   tdem::rolling_sds::Params<double> rp{0.0, 0.0, 0.0};
   // ---- restart format version 7 appends the members below, and stores the law's name
   // a normal law that is a unit (mode >= MODE_UNIT): its expanded input values (materials
-  // E1 NU1 E2 NU2 first) and the kernel parameters derived from them (derive_law)
+  // E1 NU1 E2 NU2 first) and the kernel parameters derived from them (derive_law);
+  // continuous_potential (MODE_CONT_POT): EPS N GAMMA in uv
   double uv[tdem::law::MAX_UNIT_VALUES] = {};
   tdem::law::ParamStore up{};
 };
@@ -360,7 +363,21 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
   }
 
   // normal law, as force over distance (LAMMPS applies it along del)
-  if (mode == MODE_HERTZ) {
+  if (mode == MODE_CONT_POT) {
+    // Langston's potential from geometric touch on: d = X_cut = R_i + R_j (a wall: R_i)
+    const auto p = tdem::continuous_potential::at_contact(c.uv, radj > 0.0 ? radi + radj : radi);
+    tdem::NormalKinematics<double> kin;
+    kin.overlap = overlap;
+    kin.overlap_rate = -vnnr * rinv;
+    kin.meff = meff;
+    kin.reff = 0.0;
+    const auto res = end ? tdem::continuous_potential::force<tdem::ContactEnd::zero_force>(p, kin)
+                         : tdem::continuous_potential::force<tdem::ContactEnd::zero_overlap>(p, kin);
+    ccel = res.force * rinv;
+    kn_used = res.stiffness, gn_used = res.damping;
+    tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi
+    tp.gammat = 0.0;
+  } else if (mode == MODE_HERTZ) {
     // R* from the two radii (radj = 0: wall, R* = R_i); k~ = 4/3 E* sqrt(R*)
     const double reff = radj > 0.0 ? radi * radj / (radi + radj) : radi;
     tdem::hertz::Params<double> hp;
@@ -551,6 +568,7 @@ inline void dispatch(bool uniform, int mode, int end, int slip, int tlaw, F &&f)
 #define TDEM_LMP_CASE(m) \
   if (mode == m) return f.template run<m, -1, -1>();
   TDEM_LMP_CASE(MODE_HERTZ) TDEM_LMP_CASE(MODE_EXT_LINEAR) TDEM_LMP_CASE(MODE_EXT_HERTZ)
+  TDEM_LMP_CASE(MODE_CONT_POT)
 #undef TDEM_LMP_CASE
   if (is_unit(mode)) return dispatch_unit(mode - MODE_UNIT, f, std::make_integer_sequence<int, NormalUnits::size>());
   f.template run<-1, -1, -1>();

@@ -120,6 +120,7 @@ const char *normal_name(const LawCoeffs &c) {
   return c.mode == MODE_HERTZ        ? "hertz"
          : c.mode == MODE_EXT_LINEAR ? "extended_linear"
          : c.mode == MODE_EXT_HERTZ  ? "extended_hertz"
+         : c.mode == MODE_CONT_POT   ? "continuous_potential"
                                      : "lsd";
 }
 
@@ -137,6 +138,7 @@ int mode_of_name(const char *name, int stored_mode) {
   if (n == "hertz") return MODE_HERTZ;
   if (n == "extended_linear") return MODE_EXT_LINEAR;
   if (n == "extended_hertz") return MODE_EXT_HERTZ;
+  if (n == "continuous_potential") return MODE_CONT_POT;
   if (n == "lsd" && stored_mode >= MODE_STIFFNESS_MASS && stored_mode <= MODE_RESTITUTION) return stored_mode;
   return -1;
 }
@@ -208,6 +210,10 @@ std::string describe_normal(const LawCoeffs &c) {
       s += std::string(" tangential cundall_strack kappa=") + num(c.kappa) + " (kt = kappa " +
            U::tangential_basis_text + ") mu=" + num(c.mu);
     });
+  } else if (c.mode == MODE_CONT_POT) {
+    s = "normal continuous_potential eps=" + num(c.uv[0]) + " n=" + num(c.uv[1]) + " gamma=" + num(c.uv[2]) +
+        " (d = X_cut = R_i + R_j) tangential cundall_strack kappa=" + num(c.kappa) + " (kt = kappa dF/dxi) mu=" +
+        num(c.mu);
   } else if (c.mode == MODE_EXT_LINEAR) {
     s = "normal extended_linear e_fit " + fit(c.ext.e_fit, 'e') + " tc_fit " + fit(c.ext.tc_fit, 't') +
         " v_min=" + num(c.ext.range.v_min) + " v_max=" + num(c.ext.range.v_max) +

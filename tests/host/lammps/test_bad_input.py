@@ -120,6 +120,13 @@ CASES = [
      ["normal luding PHIF (plasticity depth) = 0 must be > 0"]),
     ("luding damping", pair("normal luding 1e5 5e5 0.05 tangential cundall_strack 0.8 0.5 damping mass"),
      ["luding has no damping"]),
+    # normal continuous_potential
+    ("continuous_potential value count", pair("normal continuous_potential 1e-5 36 tangential cundall_strack 0.8 0.5"),
+     ["normal continuous_potential needs 3 values (EPS N GAMMA), got 2"]),
+    ("continuous_potential N = 0", pair("normal continuous_potential 1e-5 0 0.1 tangential cundall_strack 0.8 0.5"),
+     ["normal continuous_potential N (potential exponent) = 0 must be > 0"]),
+    ("continuous_potential KT form", pair("normal continuous_potential 1e-5 36 0.1 tangential cundall_strack 600 25 0.5"),
+     ["takes 2 values (KAPPA MU) with this normal law"]),
     # normal extended_linear
     ("ext_linear missing e_fit", pair("normal extended_linear tc_fit constant 1e-3 tangential cundall_strack 0.8 0.5"),
      ["normal extended_linear needs 'e_fit constant|rational|power C0 ..', got 'tc_fit'"]),
@@ -245,7 +252,7 @@ CASES = [
     ("rolling without values", pair(GOOD + " rolling sds"),
      ["rolling sds needs 3 values (KR GAMMAR MUR), got 0"]),
     ("missing law", pair(""),
-     ["expected 'normal lsd|hertz|walton_braun|thornton|power_law|luding|extended_linear|extended_hertz ...' "
+     ["expected 'normal lsd|hertz|walton_braun|thornton|power_law|luding|extended_linear|extended_hertz|continuous_potential ...' "
       "first, got 'end of line'"]),
     ("pair_style arguments", pair(GOOD, "pair_style tdem/gran 2000 50"),
      ["pair_style tdem/gran takes no arguments", "'2000'"]),

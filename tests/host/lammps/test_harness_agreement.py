@@ -93,6 +93,14 @@ CASES += [
     # luding (the worked example of docs/adding_a_law.md): below and beyond its plastic limit
     ("luding below xi_lim", "normal luding 1e5 5e5 0.05 %s" % TS, ["--law", "luding", "--params", "1e5,5e5,0.05"], 1.0),
     ("luding beyond xi_lim", "normal luding 1e5 5e5 0.01 %s" % TS, ["--law", "luding", "--params", "1e5,5e5,0.01"], 1.0),
+    # continuous_potential: d = X_cut = R_i + R_j (the wall: R_i), as LIGGGHTS's model and the
+    # harness's default d; damped with both ends, and elastic
+    ("continuous_potential damped, limit_force no", "normal continuous_potential 1e-5 36 0.1 %s limit_force no" % TS,
+     ["--law", "continuous_potential", "--eps", "1e-5", "--n", "36", "--gamma", "0.1", "--end", "zero_overlap"], 1.0),
+    ("continuous_potential damped, limit_force yes", "normal continuous_potential 1e-5 36 0.1 %s limit_force yes" % TS,
+     ["--law", "continuous_potential", "--eps", "1e-5", "--n", "36", "--gamma", "0.1", "--end", "zero_force"], 1.0),
+    ("continuous_potential elastic", "normal continuous_potential 2e-4 36 0 %s" % TS,
+     ["--law", "continuous_potential", "--eps", "2e-4", "--n", "36", "--gamma", "0"], 1.0),
 ]
 EXT_A = ("e_fit rational 1 1 0.2 tc_fit power 1e-3 0.2",
          ["--e-fit", "rational", "--e-coef", "1,1,0.2", "--tc-fit", "power", "--tc-coef", "1e-3,0.2"])

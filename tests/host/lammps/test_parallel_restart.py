@@ -131,7 +131,12 @@ MS = 0.01
 HLAWS = [("power_law", "normal power_law 1e7 1.5 2.915e7 " + TSL, 6.9e-4, 1e-6),
          ("extended_linear", "normal extended_linear e_fit rational 1 1 0.2 tc_fit power 1e-3 0.2 v_max 20 "
           + TSL + " limit_force yes", 1.0e-3, 1.4e-6),
-         ("extended_hertz", "normal extended_hertz 1e9 0.3 e_fit power 0.1 0.1 " + TSL, 4.6e-4, 6e-7)]
+         ("extended_hertz", "normal extended_hertz 1e9 0.3 e_fit power 0.1 0.1 " + TSL, 4.6e-4, 6e-7),
+         # no normal history: the restart carries its coefficients (EPS N GAMMA by the law's name);
+         # the lost-history control does not apply. Elastic: wall t_c 1.19e-3, pair 2.02e-3 (d = 2R);
+         # 1.5e-3 puts the restart (at 0.7 of it) where both contacts unload
+         ("continuous_potential", "normal continuous_potential 2e-4 36 0 " + TSL, 1.5e-3, 1e-6)]
+NO_NORMAL_HISTORY = ("continuous_potential",)
 HHEAD = """
 units           si
 atom_style      sphere
@@ -205,8 +210,9 @@ for name, law, tcw, dt in HLAWS:
     print("%s: restart mid-collision max rel diff %.3g; history lost: pair vx %.6f vs %.6f, wall vz %.6f vs %.6f"
           % (name, w, r_ls[2], r_ref[2], r_ls[11], r_ref[11]))
     chk.check(w <= 1e-10, "%s: restart mid-collision equals run N + run M (max rel diff %.3g)" % (name, w))
-    chk.check(abs(r_ls[2] - r_ref[2]) > 1e-3 and abs(r_ls[11] - r_ref[11]) > 1e-3,
-              "%s: control: losing the pair and wall history changes the rebound" % name)
+    if name not in NO_NORMAL_HISTORY:
+        chk.check(abs(r_ls[2] - r_ref[2]) > 1e-3 and abs(r_ls[11] - r_ref[11]) > 1e-3,
+                  "%s: control: losing the pair and wall history changes the rebound" % name)
     for newton in ("off", "on"):
         outs = []
         for np_ in (1, 2):
@@ -252,7 +258,8 @@ write_dump      all custom {dump} id x y z vx vy vz omegax omegay omegaz modify 
 BED_LAWS = [("power_law", "normal power_law 1e5 1.5 2.915e5 " + TSL),
             ("extended_linear", "normal extended_linear e_fit rational 1 1 0.2 tc_fit constant 2e-3 "
              + TSL + " limit_force yes"),
-            ("extended_hertz", "normal extended_hertz 1e6 0.3 e_fit power 0.1 0.1 " + TSL)]
+            ("extended_hertz", "normal extended_hertz 1e6 0.3 e_fit power 0.1 0.1 " + TSL),
+            ("continuous_potential", "normal continuous_potential 1e-7 36 0.002 " + TSL)]
 
 
 def bed_data(path):

@@ -331,6 +331,20 @@ def part_closed_forms():
     chk.check(ok, "luding pair: k_max %s/%.9g dt_c %s/%.9g t_c %s/%.9g"
               % (row and row["k_max"], k2, row and row["dt_critical"], 2.0 * math.sqrt(meff / k2),
                  row and row["t_contact"], tc))
+    # normal continuous_potential from touch (X = d = R_i + R_j): 1/2 m* v^2 = eps ((d/X_min)^n - 1),
+    # k_max = (n+1) n eps d^n / X_min^(n+2), damping gamma; zeta = gamma / (2 sqrt(k m*))
+    eps, n, gam, v = 1e-3, 24.0, 0.05, 1.0
+    meff, d = mass(R) / 2, 2 * R
+    xmin = d * (1 + meff * v * v / (2 * eps)) ** (-1 / n)
+    kmax = (n + 1) * n * eps * d ** n / xmin ** (n + 2)
+    inter = ("pair_style tdem/gran\npair_coeff * * normal continuous_potential %r %r %r tangential cundall_strack 0.8 0.5"
+             % (eps, n, gam))
+    _, out = lc.run(EXE, script(atoms, vel, nt, inter, 1e-6, "fix ts all tdem/timestep vmax %r" % v, body="run 0\n"),
+                    lc.workdir("ts_cpot"))
+    row = table_rows(out).get("pair_1_1")
+    ok = row is not None and close(row["k_max"], kmax, 1e-7) and close(row["zeta"], gam / (2 * math.sqrt(kmax * meff)), 1e-7)
+    chk.check(ok, "continuous_potential pair: k_max %s/%.9g zeta %s/%.9g"
+              % (row and row["k_max"], kmax, row and row["zeta"], gam / (2 * math.sqrt(kmax * meff))))
     # the scheme: fix tdem/integrate gear5 (read from the fix) and the keyword `scheme`
     # w_c at zeta = 0.0709 (e = 0.8), docs/timestep.md: gear5 0.8545, ab4 0.4138 (4 digits)
     for integ, kw, name, wc in (("fix i all tdem/integrate scheme gear5", "", "gear5", 0.8545),

@@ -64,6 +64,11 @@ void law_row(const tdem_lammps::LawCoeffs &c, th::Row &r)
       };
       break;
     }
+    case MODE_CONT_POT: {
+      const auto p = tdem::continuous_potential::at_contact(c.uv, r.distance);
+      r.advise = [p, end](const ta::Input &in) { return ta::for_continuous_potential(end, p, in); };
+      break;
+    }
     case MODE_EXT_LINEAR: {
       const tdem::extended::LinearParams p = c.ext;
       r.advise = [p, end](const ta::Input &in) { return ta::for_extended_linear(end, p, in); };
