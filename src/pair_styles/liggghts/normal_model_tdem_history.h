@@ -158,7 +158,7 @@ class TdemHistoryNormalModel : public NormalModelBase {
                                 ForceData& j_forces) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
-      tdem::liggghts::zero_distance(lmp, tdem::liggghts::unit_caller<U>(), sidata.i, sidata.j, sidata.is_wall);
+      tdem::liggghts::zero_distance_of_law(lmp, U::description.name, sidata.i, sidata.j, sidata.is_wall);
     const Coefficients& pc = coef_(sidata.itype, sidata.jtype);
     double reff = 0.0;
     if constexpr (U::needs_reff)

@@ -29,6 +29,10 @@ void error_one(LAMMPS_NS::LAMMPS* lmp, const char* file, int line, const std::st
   std::abort();  // not reached: error->one aborts
 }
 
+void zero_distance_of_law(LAMMPS_NS::LAMMPS* lmp, const char* law, int i, int j, bool wall) {
+  zero_distance(lmp, ("model tdem/" + std::string(law)).c_str(), i, j, wall);
+}
+
 void zero_distance(LAMMPS_NS::LAMMPS* lmp, const char* model, int i, int j, bool wall) {
   const auto tag = [lmp](int k) { return std::to_string(static_cast<long long>(lmp->atom->tag[k])); };
   const std::string step = std::to_string(static_cast<long long>(lmp->update->ntimestep));

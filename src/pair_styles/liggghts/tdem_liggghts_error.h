@@ -22,6 +22,10 @@ namespace liggghts {
 // surface (wall): its normal is undefined. Stops with the atom IDs instead of NaN forces. The
 // models call it behind an unlikely branch, so it costs one compare per contact.
 [[noreturn, gnu::cold, gnu::noinline]] void zero_distance(LAMMPS_NS::LAMMPS* lmp, const char* model, int i, int j, bool wall);
+// The same for `model tdem/<law>` of a law name (a compile-time constant: the caller's hot path
+// builds no string).
+[[noreturn, gnu::cold, gnu::noinline]] void zero_distance_of_law(LAMMPS_NS::LAMMPS* lmp, const char* law, int i, int j,
+                                                                 bool wall);
 
 }  // namespace liggghts
 }  // namespace tdem
