@@ -64,6 +64,13 @@ inline constexpr const Description* tangential_laws[] = {
     &mindlin_deresiewicz::description, &mindlin_no_slip::description, &di_renzo::description,
 };
 
+// Every tangential law of the hosts' input lines: cundall_strack (its first form), then the others.
+inline constexpr const Description* all_tangential_laws[] = {
+    &cundall_strack::stiffness_description, &haff_werner::description,         &linear_spring::description,
+    &walton_braun_tangential::description,  &mindlin_deresiewicz::description, &mindlin_no_slip::description,
+    &di_renzo::description,
+};
+
 // The law of `name` in the list, or nullptr.
 template <int N>
 inline const Description* find(const Description* const (&list)[N], const char* name) {

@@ -193,6 +193,17 @@ TEST(LawInput, UnitsReadAsBefore) {
                               "[KL, inf) = [100000, inf)");
 }
 
+TEST(LawInput, OneListNamesEveryTangentialLaw) {
+  std::string names;
+  for (const law::Description* d : law::all_tangential_laws) {
+    names += std::string(names.empty() ? "" : ", ") + d->name;
+    EXPECT_STREQ(d->kind, "tangential");
+  }
+  EXPECT_EQ(names, "cundall_strack, haff_werner, linear_spring, walton_braun, mindlin_deresiewicz, mindlin_no_slip, "
+                   "di_renzo");
+  EXPECT_STREQ(tdem::cundall_strack::ratio_description.name, "cundall_strack");  // its second form
+}
+
 TEST(LawInput, OneListNamesEveryNormalLaw) {
   std::string names;
   for (const law::Description* d : law::all_normal_laws) names += std::string(names.empty() ? "" : ", ") + d->name;

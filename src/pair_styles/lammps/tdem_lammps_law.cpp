@@ -117,9 +117,12 @@ std::string normal_law_names(const char *sep = ", ") {
 }
 
 
-const char *const TANGENTIAL_LAWS =
-    "cundall_strack, haff_werner, linear_spring, walton_braun, mindlin_deresiewicz, "
-    "mindlin_no_slip, di_renzo";
+// "cundall_strack, haff_werner, ...": every tangential law of the list (src/contact/laws.h).
+const std::string TANGENTIAL_LAWS = [] {
+  std::string s;
+  for (const tdem::law::Description *d : tdem::law::all_tangential_laws) s += (s.empty() ? "" : ", ") + std::string(d->name);
+  return s;
+}();
 
 // tangential haff_werner | linear_spring | walton_braun | mindlin_deresiewicz | mindlin_no_slip |
 // di_renzo with their values, at arg[iarg] (the first value): the laws of the list of
@@ -184,7 +187,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
          std::string("expected 'tangential LAW ...' after the normal law (LAW: ") + TANGENTIAL_LAWS + "), got '" +
              (iarg < narg ? arg[iarg] : "end of line") + "'");
   if (iarg + 1 >= narg)
-    fail(lmp, where, std::string("keyword 'tangential' needs a law name; allowed: ") + TANGENTIAL_LAWS);
+    fail(lmp, where, "keyword 'tangential' needs a law name; allowed: " + TANGENTIAL_LAWS);
   if (strcmp(arg[iarg + 1], "cundall_strack") != 0) {
     iarg = parse_tangential(lmp, where, arg[iarg + 1], narg, arg, iarg + 2, c);
   } else if ((iarg += 2), c.mode != MODE_STIFFNESS_MASS) {
