@@ -118,7 +118,7 @@ class Reader {
       ++i;
     }
     const Choice& ch = g.choices[c];
-    const std::string what = head + (ch.word ? std::string(head.back() == ' ' ? "" : " ") + ch.word : "");
+    const std::string what = head + (ch.word ? std::string(" ") + ch.word : std::string());
     const int have = available(i, ch.count);
     if (have < ch.count || (g.exact && have > ch.count))
       return fail(r, what + " needs " + std::to_string(ch.count) + " value" + (ch.count == 1 ? "" : "s") + " (" +

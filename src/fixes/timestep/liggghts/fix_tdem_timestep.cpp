@@ -159,13 +159,13 @@ double FixTDEMTimestep::scalar_prop(const char* name, bool& found) {
 
 // The row of a tdem normal model from what the model published (tdem_liggghts_advice.h): the law
 // and setting in use and the coefficients of the pair exactly as the model forms them.
-bool FixTDEMTimestep::published_row(const void* owner, int i, int j, bool wall, double distance, th::Row& r) {
+bool FixTDEMTimestep::published_row(const void* owner, int i, int j, bool wall, th::Row& r) {
   namespace ad = tdem::liggghts::advice;
   const ad::Entry* entry = ad::find(owner);
   if (!entry || !entry->coefficients) return false;
   const ad::Entry e = *entry;  // a copy: the rows outlive no model, but keep them independent
   ad::PairData pd;
-  pd.itype = i, pd.jtype = j, pd.wall = wall, pd.meff = r.meff, pd.reff = r.reff, pd.distance = distance;
+  pd.itype = i, pd.jtype = j, pd.wall = wall, pd.meff = r.meff, pd.reff = r.reff, pd.distance = r.distance;
   const std::string name = e.settings.empty() ? e.name : e.name + " (" + e.settings + ")";
   r.law = name;
   r.supported = true;
@@ -373,7 +373,7 @@ void FixTDEMTimestep::build_rows(double v_setup) {
       for (int j = i; j <= nt; j++) {
         if (!tm.present(i) || !tm.present(j)) continue;
         th::Row r = tm.pair_row(i, j);
-        if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(pg), i, j, false, rmin[i] + rmin[j], r))
+        if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(pg), i, j, false, r))
           law_row(model, i, j, r);
         if (hertz_type(model)) {
           const ta::Material a = material(i, i, rmin[i], rhomin[i]), b = material(j, j, rmin[j], rhomin[j]);
@@ -399,7 +399,7 @@ void FixTDEMTimestep::build_rows(double v_setup) {
       if (!wtm.present(t)) continue;
       th::Row r = wtm.wall_row(w->id, t);
       const int partner = wt >= 1 && wt <= nt ? wt : t;
-      if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(w), t, partner, true, wr[t], r))
+      if (!published_row(static_cast<LIGGGHTS::IContactHistorySetup*>(w), t, partner, true, r))
         law_row(model, t, partner, r);
       if (hertz_type(model)) r.material = material(t, t, wr[t], wrho[t]);
       st_.rows.push_back(r);

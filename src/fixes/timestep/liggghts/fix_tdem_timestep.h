@@ -56,7 +56,7 @@ class FixTDEMTimestep : public Fix {
   void law_row(const std::string& model, int i, int j, tdem::advice::host::Row& r);
   // the law of a tdem normal model, from the settings and coefficients it published
   // (src/pair_styles/liggghts/tdem_liggghts_advice.h); false: the owner has no tdem model
-  bool published_row(const void* owner, int i, int j, bool wall, double distance, tdem::advice::host::Row& r);
+  bool published_row(const void* owner, int i, int j, bool wall, tdem::advice::host::Row& r);
   // fix property/global values (found = false: no such property)
   double pair_prop(const char* name, int i, int j, bool& found);
   double type_prop(const char* name, int i, bool& found);
