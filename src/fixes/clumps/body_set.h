@@ -3,16 +3,21 @@
 // does with its bodies that needs no engine type lives here; the fixes keep what is the engine's
 // own (atom creation, regions, error calls, restart hooks, the pair and wall styles they serve).
 //
-// Design ("global bodies", as LAMMPS fix rigid): every rank keeps the state {x, v, q, L} of every
-// body. Per half step each rank writes force and torque (about the com) of its owned spheres into
-// per-sphere slots; a body whose spheres one rank owns entirely is summed there in template order
-// (6 doubles), a body split over ranks contributes its 6 nsph slot values, summed after the
-// reduction in template order. Every slot has one non-zero contributor, so the sums are bitwise the
-// same on any number of ranks. Every rank advances every body identically (rigid_body.h) and sets
-// x, v, omega of its owned spheres.
+// Design ("local bodies", issue 20): a rank keeps the bodies of which it owns at least one sphere
+// (active) and, for their mass, those of which it sees ghost spheres only. Every clump sphere
+// carries its body's molecule ID (the body key, the same on every rank) and sphere index; the state
+// {x, v, q, L} and the last force sum travel with the spheres when they change rank (exchange and
+// restart records of kState doubles). A rank that owns a sphere of a body sees all of its spheres
+// (owned or ghost) when the ghost cutoff is at least reach(), the largest distance between two
+// sphere centres of the template. Per half step each rank writes force and torque (about the com)
+// of its owned spheres, the ghosts get theirs by forward communication, and every rank holding a
+// body sums its nsph spheres in template order and advances it: the same operations on the same
+// numbers wherever the body is held, so the bodies are bitwise the same on any number of ranks,
+// and the work and memory of a rank follow the spheres it holds. The output (scalar, vector,
+// array) counts each body once, on the rank owning its sphere 0, with exact sums.
 //
-// The per-atom body and sphere indices (owned and ghost) are kept here (body_index(),
-// sphere_index()), refreshed by map_atoms() after every exchange.
+// The per-atom body index, sphere index and key (owned and ghost) are kept here (body_index(),
+// sphere_index(), body_key()), refreshed by map_atoms() after every exchange.
 //
 // Errors are std::runtime_error whose text starts with the fix's `where`; the hosts pass it to
 // their error->all.
@@ -24,6 +29,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -42,20 +48,40 @@ namespace clumps {
 // %.10g of x (messages).
 inline std::string num10(double x) { return checks::number(x, 10); }
 
-// One sphere of a clump inserted by BodySet::insert: the host creates it where it is owned.
+// One sphere of a clump inserted by BodySet::insert: the host creates it where it is owned and
+// gives it its body with set_atom().
 struct NewSphere {
   std::int64_t tag, mol;
   int sphere;  // index in the template
   Vec3 x;      // centre (unwrapped)
   Vec3 v;      // velocity
+  State body;  // the state of its body
+};
+
+// A body formed from a molecule (BodySet::form): molecule ID, state, sphere tags in template order.
+struct NewBody {
+  std::int64_t mol;
+  State state;
+  std::vector<std::int64_t> tags;
 };
 
 class BodySet {
  public:
-  // Row of a body in restart records: mol, x3, v3, q4, L3 (then force3, torque3 with_force).
+  // Per-atom state a sphere carries between ranks and in restart files: x3 v3 q4 L3 of its body
+  // and the body's force and torque of the last sum (6).
+  static constexpr int kState = 19;
+  // Exchange record of a clump sphere: body key (molecule ID), sphere index, state; of another
+  // atom: -1 alone.
+  static constexpr int kExchange = 2 + kState;
+  // Row of a body in the restart records of the global-bodies version (read for old files):
+  // mol, x3, v3, q4, L3 (then force3, torque3 with_force).
   static constexpr int kRow = 14, kRowForce = 20;
   // Row of an atom of form_bodies(): tag, mol, xu3, v3, omega3, radius.
   static constexpr int kFormRow = 12;
+  // What a forward communication carries (pack_forward / unpack_forward), doubles per atom.
+  enum class Comm { keys, force, pose };
+  static constexpr int comm_size(Comm c) { return c == Comm::keys ? 2 : c == Comm::force ? 6 : 7; }
+  static constexpr int kCommMax = 7;
 
   explicit BodySet(std::string where = "fix tdem/clump") : where_(std::move(where)) {}
 
@@ -65,8 +91,11 @@ class BodySet {
     scheme_ = scheme;
     nsph_ = static_cast<int>(t.body.size());
     smass_ = sphere_masses(t);  // the body mass shared by r^3; exactly M for one sphere
+    reach_ = 0.0;
+    for (const auto& a : t.body)
+      for (const auto& b : t.body) reach_ = std::max(reach_, norm(sub(a.x, b.x)));
   }
-  // com and inverse inertia (space frame) per body for the local_mass correction (LAMMPS styles)
+  // com and inverse inertia (space frame) per body for the local_mass correction
   void keep_local_mass(bool on) { local_mass_ = on; }
 
   const Template& tmpl() const { return tmpl_; }
@@ -75,97 +104,241 @@ class BodySet {
   Rotation scheme() const { return scheme_; }
   int nsph() const { return nsph_; }
   const std::vector<double>& sphere_mass() const { return smass_; }
-  std::size_t size() const { return st_.size(); }
+  // The largest distance between two sphere centres of the template: a rank that owns a sphere of
+  // a body sees all its spheres when the ghost cutoff is at least this.
+  double reach() const { return reach_; }
+  // bodies on all ranks together
+  std::int64_t size() const { return nbody_; }
+  void set_size(std::int64_t n) { nbody_ = n, version_++; }
+  // bodies this rank knows (with an owned sphere: active; only ghost spheres: for their mass)
+  std::size_t local_size() const { return st_.size(); }
+  bool active(std::size_t b) const { return act_[b] != 0; }
+  // is local body b reported here (output, once over the ranks: by the owner of its sphere 0)?
+  bool reported(std::size_t b) const { return out_[b] != 0; }
+  // advanced by every collective change of the bodies (output caches)
+  std::uint64_t version() const { return version_; }
   const State& state(std::size_t b) const { return st_[b]; }
-  std::int64_t mol(std::size_t b) const { return mol_[b]; }
-  const std::vector<std::int64_t>& mols() const { return mol_; }
-  bool has_tag(std::int64_t tag) const { return slot_.count(tag) != 0; }
+  std::int64_t mol(std::size_t b) const { return key_b_[b]; }
+  // is owned atom i a clump sphere?
+  bool is_sphere(int i) const { return key_[i] >= 0; }
 
-  // per body: mass (as fix rigid's masstotal), force and torque of the last sum (6), com (3) and
-  // inverse inertia in the space frame (9, row-major; local_mass only)
+  // per local body: mass (as fix rigid's masstotal), force and torque of the last sum (6), com (3)
+  // and inverse inertia in the space frame (9, row-major; local_mass only)
   double* masses() { return mass_.data(); }
   double* forces() { return fsum_.data(); }
   const double* forces() const { return fsum_.data(); }
   double* com() { return com_.data(); }
   double* inverse_inertia() { return binv_.data(); }
-  // per atom (owned and ghost): body index or -1, sphere index in the template or -1
+  // per atom (owned and ghost): local body index or -1, sphere index in the template or -1, body
+  // key (molecule ID, the same on every rank) or -1
   int* body_index() { return bidx_.data(); }
   int* sphere_index() { return sidx_.data(); }
   const int* body_index() const { return bidx_.data(); }
   const int* sphere_index() const { return sidx_.data(); }
-  std::size_t atom_capacity() const { return bidx_.size(); }
+  std::int64_t* body_key() { return key_.data(); }
+  const std::int64_t* body_key() const { return key_.data(); }
 
-  void clear() {
-    st_.clear(), mol_.clear(), tags_.clear(), mass_.clear(), fsum_.clear(), rot_.clear(), omg_.clear();
-    slot_.clear();
+  // ---------------------------------------------------------------- per-atom arrays (the hosts'
+  // grow_arrays, copy_arrays, pack/unpack_exchange, pack/unpack_restart call these)
+  void grow(int nmax) {
+    const std::size_t n = static_cast<std::size_t>(std::max(nmax, 1));
+    if (n <= key_.size()) return;
+    key_.resize(n, -1), sidx_.resize(n, -1), bidx_.resize(n, -1);
+    pst_.resize(n * kState, 0.0), fs6_.resize(n * 6, 0.0);
+  }
+  void copy_atom(int i, int j) {  // atom i to slot j
+    key_[j] = key_[i], sidx_[j] = sidx_[i], bidx_[j] = bidx_[i];
+    if (bidx_[i] == kInAtom) std::copy(&pst_[kState * i], &pst_[kState * i] + kState, &pst_[kState * j]);
+  }
+  int pack_exchange(int i, double* buf) const {
+    buf[0] = static_cast<double>(key_[i]);
+    if (key_[i] < 0) return 1;
+    buf[1] = sidx_[i];
+    state_of(i, buf + 2);
+    return kExchange;
+  }
+  int unpack_exchange(int n, const double* buf) {
+    key_[n] = static_cast<std::int64_t>(buf[0]);
+    if (key_[n] < 0) {
+      sidx_[n] = bidx_[n] = -1;
+      return 1;
+    }
+    sidx_[n] = static_cast<int>(buf[1]);
+    bidx_[n] = kInAtom;
+    std::copy(buf + 2, buf + 2 + kState, &pst_[kState * n]);
+    return kExchange;
+  }
+  // restart: the exchange record behind its length (the engines' convention)
+  int pack_restart(int i, double* buf) const {
+    const int n = 1 + pack_exchange(i, buf + 1);
+    buf[0] = n;
+    return n;
+  }
+  void unpack_restart(int n, const double* rec) { unpack_exchange(n, rec + 1); }
+  static constexpr int kRestartMax = 1 + kExchange;
+
+  // Owned atom i becomes sphere k of the body `key` in state s (insert, form, old restart files).
+  void set_atom(int i, std::int64_t key, int k, const State& s, const double* f6 = nullptr) {
+    key_[i] = key, sidx_[i] = k, bidx_[i] = kInAtom;
+    double* p = &pst_[kState * i];
+    put_state(s, p);
+    for (int c = 0; c < 6; c++) p[13 + c] = f6 ? f6[c] : 0.0;
   }
 
-  template <class TagT>
-  int add(std::int64_t mol, const State& s, const TagT* tags) {
-    const int b = static_cast<int>(st_.size());
-    st_.push_back(s);
-    mol_.push_back(mol);
-    mass_.push_back(body_.mass);
-    fsum_.resize(6 * st_.size(), 0.0);
-    rot_.push_back(rotation_matrix(s.q));
-    omg_.push_back(angular_velocity(s, body_));
-    for (int k = 0; k < nsph_; k++) {
-      tags_.push_back(static_cast<std::int64_t>(tags[k]));
-      slot_[static_cast<std::int64_t>(tags[k])] = b * nsph_ + k;
+  // ---------------------------------------------------------------- forward communication
+  void set_comm(Comm c) { comm_ = c; }
+  Comm comm() const { return comm_; }
+  int pack_forward(int n, const int* list, double* buf) const {
+    int m = 0;
+    for (int ii = 0; ii < n; ii++) {
+      const int j = list[ii];
+      if (comm_ == Comm::keys) {
+        buf[m++] = static_cast<double>(key_[j]);
+        buf[m++] = sidx_[j];
+      } else if (comm_ == Comm::force) {
+        for (int c = 0; c < 6; c++) buf[m++] = fs6_[6 * j + c];
+      } else {
+        // a body with an owned sphere here: its state; else (a ghost sent on, in a later swap)
+        // the pose the ghost received
+        const int b = bidx_[j];
+        if (b >= 0 && act_[b]) {
+          const State& s = st_[b];
+          const double pose[7] = {s.x[0], s.x[1], s.x[2], s.q.w, s.q.x, s.q.y, s.q.z};
+          for (int c = 0; c < 7; c++) buf[m++] = pose[c];
+        } else {
+          for (int c = 0; c < 7; c++) buf[m++] = pst_[kState * static_cast<std::size_t>(j) + c];
+        }
+      }
     }
-    return b;
+    return m;
+  }
+  void unpack_forward(int n, int first, const double* buf) {
+    int m = 0;
+    for (int j = first; j < first + n; j++) {
+      if (comm_ == Comm::keys) {
+        key_[j] = static_cast<std::int64_t>(buf[m++]);
+        sidx_[j] = static_cast<int>(buf[m++]);
+      } else if (comm_ == Comm::force) {
+        for (int c = 0; c < 6; c++) fs6_[6 * j + c] = buf[m++];
+      } else {
+        for (int c = 0; c < 7; c++) pst_[kState * j + c] = buf[m++];  // ghosts: com, q
+      }
+    }
   }
 
-  // ---------------------------------------------------------------- atoms
-  // Body and sphere index of the nall atoms (owned first), radius and mass of the clump spheres
-  // from the template, and the layout of the force reduction. Returns the number of clump spheres
-  // owned by all ranks together (size() * nsph() unless spheres were lost).
-  template <class TagT>
-  std::int64_t map_atoms(int nall, int nlocal, int nmax, const TagT* tag, double* radius, double* rmass,
-                         MPI_Comm world) {
-    if (static_cast<std::size_t>(std::max(nmax, nall)) > bidx_.size()) {
-      bidx_.resize(std::max(nmax, nall));
-      sidx_.resize(std::max(nmax, nall));
+  // ---------------------------------------------------------------- the local bodies
+  // After every exchange and border update (the hosts' setup_pre_neighbor and pre_neighbor): the
+  // bodies of the owned spheres, from the previous local bodies or from the state the spheres
+  // carried in; forward(Comm) runs the host's forward communication of this set (the keys of
+  // the ghost atoms); per-atom body and sphere index of owned and ghost atoms; the atom of every
+  // sphere of every body with an owned sphere; radius and mass of the clump spheres from the
+  // template. Returns the clump spheres owned by all ranks together and, in missing, the smallest
+  // key of a body with an owned sphere some of whose spheres this rank does not see (-1: none).
+  template <class TagT, class Forward>
+  std::int64_t map_atoms(int nlocal, int nghost, const TagT* tag, double* radius, double* rmass, MPI_Comm world,
+                         Forward forward, std::int64_t& missing) {
+    const int nall = nlocal + nghost;
+    grow(nall);
+    if (!pending_.empty()) adopt_pending(nlocal, tag);
+    std::vector<State> old_st;
+    std::vector<double> old_f;
+    old_st.swap(st_), old_f.swap(fsum_);
+    key_b_.clear(), act_.clear(), index_.clear();
+    std::int64_t nmine = 0;
+    for (int i = 0; i < nlocal; i++) {
+      if (key_[i] < 0) {
+        bidx_[i] = -1;
+        continue;
+      }
+      nmine++;
+      auto it = index_.find(key_[i]);
+      if (it == index_.end()) {
+        const int b = new_body(key_[i], true);
+        if (bidx_[i] >= 0) {
+          st_[b] = old_st[bidx_[i]];
+          std::copy(&old_f[6 * bidx_[i]], &old_f[6 * bidx_[i]] + 6, &fsum_[6 * b]);
+        } else {
+          get_state(&pst_[kState * i], st_[b]);
+          std::copy(&pst_[kState * i + 13], &pst_[kState * i + 19], &fsum_[6 * b]);
+        }
+        it = index_.emplace(key_[i], b).first;
+      }
+      bidx_[i] = it->second;
     }
-    const std::int64_t nmine =
-        map_clump_atoms(nall, nlocal, tag, slot_, nsph_, tmpl_, smass_, bidx_.data(), sidx_.data(), radius, rmass);
-    std::int64_t all = 0;
-    MPI_Allreduce(&nmine, &all, 1, MPI_INT64_T, MPI_SUM, world);
-    // bodies owned by one rank entirely are reduced as 6 sums, split bodies as their 6 nsph slots
-    int nprocs = 1;
-    MPI_Comm_size(world, &nprocs);
+    comm_ = Comm::keys;
+    forward(Comm::keys);
+    for (int j = nlocal; j < nall; j++) {
+      if (key_[j] < 0) {
+        bidx_[j] = sidx_[j] = -1;
+        continue;
+      }
+      auto it = index_.find(key_[j]);
+      if (it == index_.end()) it = index_.emplace(key_[j], new_body(key_[j], false)).first;
+      bidx_[j] = it->second;
+    }
     const std::size_t nb = st_.size();
-    std::vector<int> cnt(nb, 0), mx(nb, 0);
-    for (int i = 0; i < nlocal; i++)
-      if (bidx_[i] >= 0) cnt[bidx_[i]]++;
-    if (nprocs > 1 && nb > 0)
-      MPI_Allreduce(cnt.data(), mx.data(), static_cast<int>(nb), MPI_INT, MPI_MAX, world);
-    else
-      mx = cnt;
-    red_off_.assign(nb + 1, 0);
-    split_.assign(nb, 0);
-    for (std::size_t b = 0; b < nb; b++) {
-      split_[b] = mx[b] < nsph_ ? 1 : 0;
-      red_off_[b + 1] = red_off_[b] + (split_[b] ? 6 * nsph_ : 6);
+    atoms_.assign(nb * nsph_, -1);
+    for (int i = 0; i < nall; i++) {
+      if (bidx_[i] < 0) continue;
+      int& a = atoms_[static_cast<std::size_t>(bidx_[i]) * nsph_ + sidx_[i]];
+      if (a < 0) a = i;  // owned atoms come first: a body's own spheres are its owned copies
+      radius[i] = tmpl_.body[sidx_[i]].r;
+      rmass[i] = smass_[sidx_[i]];
     }
-    return all;
+    std::int64_t miss = std::numeric_limits<std::int64_t>::max();
+    out_.assign(nb, 0);
+    for (std::size_t b = 0; b < nb; b++) {
+      if (!act_[b]) continue;
+      for (int k = 0; k < nsph_; k++)
+        if (atoms_[b * nsph_ + k] < 0) miss = std::min(miss, key_b_[b]);
+      out_[b] = atoms_[b * nsph_] >= 0 && atoms_[b * nsph_] < nlocal;  // the owner of sphere 0 reports it
+    }
+    std::int64_t all[2] = {nmine, -miss}, red[2] = {0, 0};
+    MPI_Allreduce(&all[0], &red[0], 1, MPI_INT64_T, MPI_SUM, world);
+    MPI_Allreduce(&all[1], &red[1], 1, MPI_INT64_T, MPI_MAX, world);
+    missing = -red[1] == std::numeric_limits<std::int64_t>::max() ? -1 : -red[1];
+    rot_.assign(nb, Mat3{});
+    omg_.assign(nb, Vec3{});
+    version_++;
+    refresh_kinematics(forward);  // the same rotation and omega as before the exchange, bitwise
+    return red[0];
   }
   std::string lost_message(std::int64_t found) const {
-    return where_ + ": " + std::to_string(found) + " clump spheres found, " + std::to_string(st_.size()) +
-           " bodies need " + std::to_string(static_cast<std::int64_t>(st_.size()) * nsph_) +
-           " (clump spheres lost or deleted)";
+    return where_ + ": " + std::to_string(found) + " clump spheres found, " + std::to_string(nbody_) +
+           " bodies need " + std::to_string(nbody_ * nsph_) + " (clump spheres lost or deleted)";
+  }
+  std::string reach_message(std::int64_t key, double cutghost) const {
+    return where_ + ": a rank owns a sphere of the body of molecule " + std::to_string(key) +
+           " but does not see all its spheres: the ghost cutoff " + num10(cutghost) +
+           " is shorter than the largest distance between two spheres of template " + tmpl_.name + ", " +
+           num10(reach_) + " (set comm_modify cutoff to at least that)";
   }
 
-  // rotation matrix and angular velocity of every body (and com, inverse inertia for local_mass)
-  void refresh_kinematics() {
-    for (std::size_t b = 0; b < st_.size(); b++) {
+  // Rotation matrix and angular velocity of the bodies with an owned sphere; for local_mass com and
+  // inverse inertia of every local body (a body seen only through ghosts gets its pose by
+  // forward(Comm::pose)).
+  template <class Forward>
+  void refresh_kinematics(Forward forward) {
+    const std::size_t nb = st_.size();
+    for (std::size_t b = 0; b < nb; b++) {
+      if (!act_[b]) continue;
       rot_[b] = rotation_matrix(st_[b].q);
       omg_[b] = omega_of(b);
     }
     if (!local_mass_) return;
-    com_.resize(3 * st_.size());
-    binv_.resize(9 * st_.size());
-    for (std::size_t b = 0; b < st_.size(); b++) {
+    comm_ = Comm::pose;
+    forward(Comm::pose);
+    com_.resize(3 * nb);
+    binv_.resize(9 * nb);
+    for (std::size_t b = 0; b < nb; b++) {
+      if (!act_[b]) {  // the pose some ghost sphere of it brought
+        int a = -1;
+        for (int k = 0; k < nsph_ && a < 0; k++) a = atoms_[b * nsph_ + k];
+        const double* p = &pst_[kState * a];
+        st_[b].x = {p[0], p[1], p[2]};
+        st_[b].q = {p[3], p[4], p[5], p[6]};
+        rot_[b] = rotation_matrix(st_[b].q);
+      }
       const Mat3& R = rot_[b];
       for (int i = 0; i < 3; i++) {
         com_[3 * b + i] = st_[b].x[i];
@@ -178,16 +351,17 @@ class BodySet {
     }
   }
 
-  // forces() <- force and torque about the com of every body, from the owned spheres' f, torque
-  void sum_forces(int nlocal, double* const* f, double* const* t, MPI_Comm world) {
-    const std::size_t nb = st_.size(), nslot = nb * nsph_;
-    if (slotf_.size() != 6 * nslot) slotf_.assign(6 * nslot, 0.0);
-    else std::fill(slotf_.begin(), slotf_.end(), 0.0);
+  // forces() <- force and torque about the com of every body with an owned sphere: each owned
+  // sphere's (f, r x f + torque), the ghosts' by forward(Comm::force), summed in template order
+  // (the same operations on every rank that holds the body, so the sums do not depend on the
+  // number of ranks).
+  template <class Forward>
+  void sum_forces(int nlocal, double* const* f, double* const* t, Forward forward) {
     for (int i = 0; i < nlocal; i++) {
       const int b = bidx_[i];
       if (b < 0) continue;
       const Vec3 r = offset(b, sidx_[i]);
-      double* fs = &slotf_[6 * (static_cast<std::size_t>(b) * nsph_ + sidx_[i])];
+      double* fs = &fs6_[6 * static_cast<std::size_t>(i)];
       fs[0] = f[i][0];
       fs[1] = f[i][1];
       fs[2] = f[i][2];
@@ -195,24 +369,15 @@ class BodySet {
       fs[4] = r[2] * f[i][0] - r[0] * f[i][2] + t[i][1];
       fs[5] = r[0] * f[i][1] - r[1] * f[i][0] + t[i][2];
     }
-    int nprocs = 1;
-    MPI_Comm_size(world, &nprocs);
-    if (nprocs == 1) {
-      for (std::size_t b = 0; b < nb; b++) body_sum(&slotf_[6 * b * nsph_], &fsum_[6 * b]);
-      return;
-    }
-    red_.assign(red_off_[nb], 0.0);
-    for (std::size_t b = 0; b < nb; b++) {
-      const double* fs = &slotf_[6 * b * nsph_];
-      double* out = &red_[red_off_[b]];
-      if (split_[b]) std::copy(fs, fs + 6 * nsph_, out);
-      else body_sum(fs, out);  // zero on the ranks that do not own the body
-    }
-    MPI_Allreduce(MPI_IN_PLACE, red_.data(), static_cast<int>(red_.size()), MPI_DOUBLE, MPI_SUM, world);
-    for (std::size_t b = 0; b < nb; b++) {
-      const double* in = &red_[red_off_[b]];
-      if (split_[b]) body_sum(in, &fsum_[6 * b]);
-      else std::copy(in, in + 6, &fsum_[6 * b]);
+    comm_ = Comm::force;
+    forward(Comm::force);
+    for (std::size_t b = 0; b < st_.size(); b++) {
+      if (!act_[b]) continue;
+      const int* a = &atoms_[b * nsph_];
+      double* fb = &fsum_[6 * b];
+      for (int c = 0; c < 6; c++) fb[c] = fs6_[6 * static_cast<std::size_t>(a[0]) + c];
+      for (int k = 1; k < nsph_; k++)
+        for (int c = 0; c < 6; c++) fb[c] += fs6_[6 * static_cast<std::size_t>(a[k]) + c];
     }
   }
 
@@ -240,62 +405,31 @@ class BodySet {
     }
   }
 
-  // The two half steps of every body with the forces of the last sum_forces() times c (ftm2v).
-  void initial_integrate(double h, double c) {
+  // The two half steps of the bodies with an owned sphere with the forces of the last
+  // sum_forces() times c (ftm2v).
+  template <class Forward>
+  void initial_integrate(double h, double c, Forward forward) {
     for (std::size_t b = 0; b < st_.size(); b++) {
+      if (!act_[b]) continue;
       const double* fb = &fsum_[6 * b];
       clumps::initial_integrate(st_[b], body_, Vec3{c * fb[0], c * fb[1], c * fb[2]},
                                 Vec3{c * fb[3], c * fb[4], c * fb[5]}, h, scheme_);
     }
-    refresh_kinematics();
+    version_++;
+    refresh_kinematics(forward);
   }
   void final_integrate(double h, double c) {
     for (std::size_t b = 0; b < st_.size(); b++) {
+      if (!act_[b]) continue;
       const double* fb = &fsum_[6 * b];
       clumps::final_integrate(st_[b], body_, Vec3{c * fb[0], c * fb[1], c * fb[2]},
                               Vec3{c * fb[3], c * fb[4], c * fb[5]}, h);
       omg_[b] = omega_of(b);  // q and x are unchanged: rotation, com and inertia stay valid
     }
+    version_++;
   }
 
-  // ---------------------------------------------------------------- output (the fixes' scalar,
-  // vector and array; mvv2e converts mass velocity^2 to energy)
-  double kinetic_energy(double mvv2e) const {
-    double e = 0.0;
-    for (const auto& s : st_) e += clumps::kinetic_energy(s, body_);
-    return e * mvv2e;
-  }
-  // [0] bodies, [1-3] total momentum, [4-6] sum of the bodies' angular momenta about their com,
-  // [7] translational, [8] rotational kinetic energy
-  double vector(int n, double mvv2e) const {
-    if (n == 0) return static_cast<double>(st_.size());
-    double out = 0.0;
-    for (const auto& s : st_) {
-      if (n >= 1 && n <= 3) out += body_.mass * s.v[n - 1];
-      else if (n >= 4 && n <= 6) out += s.L[n - 4];
-      else if (n == 7) out += 0.5 * body_.mass * dot(s.v, s.v) * mvv2e;
-      else if (n == 8) out += rotational_energy(s, body_) * mvv2e;
-    }
-    return out;
-  }
-  // row per body: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
-  static constexpr int kArrayColumns = 17;
-  double array(int i, int j) const {
-    if (i < 0 || i >= static_cast<int>(st_.size())) return 0.0;
-    const State& s = st_[i];
-    if (j == 0) return static_cast<double>(mol_[i]);
-    if (j <= 3) return s.x[j - 1];
-    if (j <= 6) return s.v[j - 4];
-    if (j == 7) return s.q.w;
-    if (j == 8) return s.q.x;
-    if (j == 9) return s.q.y;
-    if (j == 10) return s.q.z;
-    if (j <= 13) return s.L[j - 11];
-    if (j <= 16) return angular_velocity(s, body_)[j - 14];
-    return 0.0;
-  }
-
-  // 1/M + (r x n).I^-1 (r x n) of body b seen at its sphere k (r: sphere centre - com)
+  // 1/M + (r x n).I^-1 (r x n) of local body b seen at its sphere k (r: sphere centre - com)
   double inverse_side_mass(int b, int k, const double* n) const {
     const Vec3 r = offset(b, k);
     const Vec3 rn = {r[1] * n[2] - r[2] * n[1], r[2] * n[0] - r[0] * n[2], r[0] * n[1] - r[1] * n[0]};
@@ -305,129 +439,51 @@ class BodySet {
   }
 
   double memory_usage() const {
-    return static_cast<double>(bidx_.size()) * 2 * sizeof(int) +
-           static_cast<double>(st_.size()) * (sizeof(State) + sizeof(Mat3) + sizeof(Vec3) + 20 * sizeof(double)) +
-           static_cast<double>(tags_.size()) * (sizeof(std::int64_t) + 6 * sizeof(double) + 32);
+    const double per_atom = sizeof(std::int64_t) + 2 * sizeof(int) + (kState + 6) * sizeof(double);
+    const double per_body = sizeof(State) + sizeof(Mat3) + sizeof(Vec3) + 20 * sizeof(double) +
+                            nsph_ * sizeof(int) + sizeof(std::int64_t) + 2 + 48;
+    return static_cast<double>(key_.size()) * per_atom + static_cast<double>(st_.size()) * per_body +
+           0.0;
   }
 
   // ---------------------------------------------------------------- restart
-  // Per body: kRow (or kRowForce) doubles, then its nsph sphere tags.
-  void pack(std::vector<double>& buf, bool with_force) const {
-    for (std::size_t b = 0; b < st_.size(); b++) {
-      const State& s = st_[b];
-      const double row[kRow] = {static_cast<double>(mol_[b]), s.x[0], s.x[1], s.x[2], s.v[0], s.v[1], s.v[2],
-                                s.q.w, s.q.x, s.q.y, s.q.z, s.L[0], s.L[1], s.L[2]};
-      buf.insert(buf.end(), row, row + kRow);
-      if (with_force) buf.insert(buf.end(), &fsum_[6 * b], &fsum_[6 * b] + 6);
-      for (int k = 0; k < nsph_; k++) buf.push_back(static_cast<double>(tags_[b * nsph_ + k]));
-    }
-  }
-  // The bodies of a record written by pack() (nb bodies of ns spheres), replacing these.
-  void unpack(const double* p, int nb, int ns, bool with_force) {
+  // The global record of this version holds only counts and flags (the bodies travel with their
+  // spheres' per-atom records). Records of the global-bodies version (every body: kRow or
+  // kRowForce doubles, then its nsph sphere tags) are read into a list that the next map_atoms()
+  // gives to the owned spheres.
+  void unpack_global_bodies(const double* p, int nb, int ns, bool with_force) {
     if (ns != nsph_)
       throw std::runtime_error(where_ + ": the restart file has clumps of " + std::to_string(ns) +
                                " spheres, template " + tmpl_.name + " has " + std::to_string(nsph_));
-    clear();
+    pending_.clear();
     const int w = with_force ? kRowForce : kRow;
-    std::vector<std::int64_t> tags(nsph_);
     for (int b = 0; b < nb; b++) {
-      State s;
-      s.x = {p[1], p[2], p[3]};
-      s.v = {p[4], p[5], p[6]};
-      s.q = {p[7], p[8], p[9], p[10]};
-      s.L = {p[11], p[12], p[13]};
-      for (int k = 0; k < nsph_; k++) tags[k] = static_cast<std::int64_t>(p[w + k]);
-      add(static_cast<std::int64_t>(p[0]), s, tags.data());
-      if (with_force) std::copy(p + kRow, p + kRowForce, &fsum_[6 * b]);
+      Pending e;
+      e.mol = static_cast<std::int64_t>(p[0]);
+      e.s.x = {p[1], p[2], p[3]};
+      e.s.v = {p[4], p[5], p[6]};
+      e.s.q = {p[7], p[8], p[9], p[10]};
+      e.s.L = {p[11], p[12], p[13]};
+      for (int c = 0; c < 6; c++) e.f[c] = with_force ? p[kRow + c] : 0.0;
+      for (int k = 0; k < nsph_; k++) {
+        e.k = k;
+        pending_[static_cast<std::int64_t>(p[w + k])] = e;
+      }
       p += w + nsph_;
     }
+    set_size(nb);
   }
-
-  // ---------------------------------------------------------------- making bodies
-  // Bodies from the rows (kFormRow doubles each, of every rank) of the group's atoms that are not
-  // clump spheres yet: one body per molecule, its spheres in ID order = template order, placed by
-  // the best fit of the template. Returns the number of bodies formed.
-  int form(const std::vector<double>& rows, const std::string& group) {
-    std::map<std::int64_t, std::vector<const double*>> mols;
-    for (std::size_t k = 0; k < rows.size() / kFormRow; k++)
-      mols[static_cast<std::int64_t>(rows[kFormRow * k + 1])].push_back(&rows[kFormRow * k]);
-    for (const std::int64_t m : mol_)
-      if (mols.count(m)) fail("molecule " + std::to_string(m) + " is already a body; its spheres must not change");
-    int nnew = 0;
-    std::vector<std::int64_t> tags(nsph_);
-    std::vector<Vec3> p(nsph_), vel(nsph_), om(nsph_);
-    for (auto& kv : mols) {
-      auto& v = kv.second;
-      const std::string m = std::to_string(kv.first);
-      std::sort(v.begin(), v.end(), [](const double* a, const double* b) { return a[0] < b[0]; });
-      if (static_cast<int>(v.size()) != nsph_)
-        fail("molecule " + m + " has " + std::to_string(v.size()) + " spheres in group " + group + ", template " +
-             tmpl_.name + " has " + std::to_string(nsph_));
-      for (int k = 0; k < nsph_; k++) {
-        tags[k] = static_cast<std::int64_t>(v[k][0]);
-        const double r = tmpl_.body[k].r;
-        if (std::fabs(v[k][11] - r) > 1e-6 * r)
-          fail("atom " + std::to_string(tags[k]) + " (molecule " + m + ") has radius " + num10(v[k][11]) +
-               " but sphere " + std::to_string(k + 1) + " of template " + tmpl_.name + " has radius " + num10(r));
-        p[k] = {v[k][2], v[k][3], v[k][4]};
-        vel[k] = {v[k][5], v[k][6], v[k][7]};
-        om[k] = {v[k][8], v[k][9], v[k][10]};
-      }
-      // orientation (Horn's quaternion) and velocities (least squares)
-      BodyFit fit;
-      try {
-        fit = fit_body(tmpl_, body_, p, vel, om);
-      } catch (const std::exception& e) {
-        fail("molecule " + m + ": " + e.what());
-      }
-      const double allowed = 1e-6 * tmpl_.bounding_radius;
-      if (fit.residual > allowed)
-        fail("the spheres of molecule " + m + " (atom IDs " + std::to_string(tags[0]) +
-             "..., in ID order) are not a rigid copy of template " + tmpl_.name + ": largest distance " +
-             num10(fit.residual) + " from the best fit (allowed " + num10(allowed) + ")");
-      add(kv.first, fit.state, tags.data());
-      nnew++;
+  // Owned atoms (tags of the first nlocal) that are spheres of `bodies` become so.
+  template <class TagT>
+  void adopt(const std::vector<NewBody>& bodies, int nlocal, const TagT* tag) {
+    std::unordered_map<std::int64_t, std::pair<int, int>> where;
+    for (std::size_t b = 0; b < bodies.size(); b++)
+      for (int k = 0; k < nsph_; k++) where[bodies[b].tags[k]] = {static_cast<int>(b), k};
+    for (int i = 0; i < nlocal; i++) {
+      const auto it = where.find(static_cast<std::int64_t>(tag[i]));
+      if (it != where.end()) set_atom(i, bodies[it->second.first].mol, it->second.second, bodies[it->second.first].state);
     }
-    return nnew;
   }
-  std::string formed_message(int nnew, const std::string& group) const {
-    return where_ + ": " + std::to_string(nnew) + " bodies formed from the molecules of group " + group + " (" +
-           std::to_string(st_.size()) + " bodies in all)\n";
-  }
-
-  // n clumps placed without overlap (in: region, existing spheres, seed; place_clumps of
-  // host_bodies.h), moving with velocity vel, as bodies with molecule IDs maxmol + 1 ... and
-  // sphere tags maxtag + 1 ...; returns their spheres for the host to create.
-  std::vector<NewSphere> insert(const PlacementInput& in, const Vec3& vel, std::int64_t maxtag, std::int64_t maxmol,
-                                const std::string& region) {
-    for (const std::int64_t m : mol_) maxmol = std::max(maxmol, m);
-    const PlacementResult res = place_clumps(tmpl_, in);
-    if (!res.complete)
-      fail("insert: placed only " + std::to_string(res.bodies.size()) + " of " + std::to_string(in.n) +
-           " clumps in region " + region + ": " + std::to_string(in.max_failures) +
-           " random attempts in a row found no free place (region too small or too full); use a larger region "
-           "or a smaller N");
-    attempts_ = res.attempts, first_mol_ = maxmol + 1, first_tag_ = maxtag + 1;
-    std::vector<NewSphere> out;
-    std::vector<std::int64_t> tags(nsph_);
-    for (int b = 0; b < in.n; b++) {
-      const std::int64_t mol = maxmol + 1 + b;
-      for (int k = 0; k < nsph_; k++) tags[k] = maxtag + 1 + static_cast<std::int64_t>(b) * nsph_ + k;
-      State s = res.bodies[b];
-      s.v = vel;
-      s.L = {0, 0, 0};
-      add(mol, s, tags.data());
-      for (int k = 0; k < nsph_; k++) out.push_back({tags[k], mol, k, res.spheres[std::size_t(b) * nsph_ + k], vel});
-    }
-    return out;
-  }
-  std::string inserted_message(int n, std::int64_t created, const std::string& region) const {
-    return where_ + ": inserted " + std::to_string(n) + " clumps (" + std::to_string(created) + " spheres) in region " +
-           region + " after " + std::to_string(attempts_) + " attempts; molecule IDs " + std::to_string(first_mol_) +
-           "-" + std::to_string(first_mol_ + n - 1) + ", atom IDs " + std::to_string(first_tag_) + "-" +
-           std::to_string(first_tag_ + created - 1) + "\n";
-  }
-
   std::string template_message(Correction c) const {
     return where_ + ": template " + tmpl_.name + " (" + std::to_string(nsph_) + " spheres): mass " +
            num10(tmpl_.mp.mass) + ", principal inertia " + num10(tmpl_.mp.principal[0]) + " " +
@@ -437,31 +493,80 @@ class BodySet {
   }
 
  private:
+  static constexpr int kInAtom = -2;  // bidx_ of an owned sphere whose body state is in pst_
+  struct Pending {
+    std::int64_t mol = 0;
+    int k = 0;
+    State s;
+    double f[6] = {0, 0, 0, 0, 0, 0};
+  };
+
   std::string where_;
   Template tmpl_;
   Body body_;
   Rotation scheme_ = Rotation::splitting;
   int nsph_ = 0;
+  double reach_ = 0.0;
   std::vector<double> smass_;
   bool local_mass_ = false;
-  // bodies
+  std::int64_t nbody_ = 0;      // on all ranks
+  std::uint64_t version_ = 0;   // advanced by every collective change of the bodies (output caches)
+  Comm comm_ = Comm::keys;
+  // local bodies
   std::vector<State> st_;
-  std::vector<std::int64_t> mol_, tags_;  // molecule ID per body, nsph sphere tags per body
+  std::vector<std::int64_t> key_b_;
+  std::vector<char> act_, out_;
+  std::vector<int> atoms_;  // nsph atom indices per body (owned copy first), -1 if not seen
   std::vector<double> mass_, fsum_, com_, binv_;
   std::vector<Mat3> rot_;
   std::vector<Vec3> omg_;
-  std::unordered_map<std::int64_t, int> slot_;  // tag -> body * nsph + sphere
-  // force reduction
-  std::vector<double> slotf_, red_;
-  std::vector<std::size_t> red_off_;
-  std::vector<char> split_;
+  std::unordered_map<std::int64_t, int> index_;  // key -> local body
   // per atom
+  std::vector<std::int64_t> key_;
   std::vector<int> bidx_, sidx_;
-  // the last insert (for its message)
-  long long attempts_ = 0;
-  std::int64_t first_mol_ = 0, first_tag_ = 0;
+  std::vector<double> pst_, fs6_;
+  // old restart files: tag -> body
+  std::unordered_map<std::int64_t, Pending> pending_;
 
   [[noreturn]] void fail(const std::string& what) const { throw std::runtime_error(where_ + ": " + what); }
+
+  int new_body(std::int64_t key, bool active) {
+    const int b = static_cast<int>(st_.size());
+    st_.push_back(State{});
+    key_b_.push_back(key);
+    act_.push_back(active ? 1 : 0);
+    mass_.resize(st_.size(), body_.mass);
+    fsum_.resize(6 * st_.size(), 0.0);
+    return b;
+  }
+  static void put_state(const State& s, double* p) {
+    const double row[13] = {s.x[0], s.x[1], s.x[2], s.v[0], s.v[1], s.v[2], s.q.w, s.q.x, s.q.y, s.q.z,
+                            s.L[0], s.L[1], s.L[2]};
+    std::copy(row, row + 13, p);
+  }
+  static void get_state(const double* p, State& s) {
+    s.x = {p[0], p[1], p[2]};
+    s.v = {p[3], p[4], p[5]};
+    s.q = {p[6], p[7], p[8], p[9]};
+    s.L = {p[10], p[11], p[12]};
+  }
+  // the carried state of owned atom i: from its local body, or what it brought along
+  void state_of(int i, double* p) const {
+    if (bidx_[i] >= 0) {
+      put_state(st_[bidx_[i]], p);
+      std::copy(&fsum_[6 * bidx_[i]], &fsum_[6 * bidx_[i]] + 6, p + 13);
+    } else {
+      std::copy(&pst_[kState * i], &pst_[kState * i] + kState, p);
+    }
+  }
+  template <class TagT>
+  void adopt_pending(int nlocal, const TagT* tag) {
+    for (int i = 0; i < nlocal; i++) {
+      const auto it = pending_.find(static_cast<std::int64_t>(tag[i]));
+      if (it != pending_.end()) set_atom(i, it->second.mol, it->second.k, it->second.s, it->second.f);
+    }
+    pending_.clear();
+  }
 
   Vec3 offset(int b, int k) const { return mul(rot_[b], tmpl_.body[k].x); }
   // omega = Lambda I^-1 Lambda^T L with the cached rotation matrix
@@ -469,11 +574,7 @@ class BodySet {
     const Vec3 pi = mul_t(rot_[b], st_[b].L);
     return mul(rot_[b], Vec3{pi[0] / body_.inertia[0], pi[1] / body_.inertia[1], pi[2] / body_.inertia[2]});
   }
-  void body_sum(const double* fs, double* fb) const {
-    for (int c = 0; c < 6; c++) fb[c] = fs[c];
-    for (int k = 1; k < nsph_; k++)
-      for (int c = 0; c < 6; c++) fb[c] += fs[6 * k + c];
-  }
+
 };
 
 }  // namespace clumps

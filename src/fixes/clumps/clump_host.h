@@ -16,6 +16,8 @@
 #include <type_traits>
 #include <vector>
 
+#include "fixes/clumps/body_making.h"
+#include "fixes/clumps/body_output.h"
 #include "fixes/clumps/body_set.h"
 #include "fixes/clumps/clump_args.h"
 
@@ -50,19 +52,23 @@ std::int64_t max_over_ranks(MPI_Comm comm, int n, const T* v) {
   return all;
 }
 
-// The output and integration flags of a fix tdem/clump (an engine's Fix): scalar = kinetic energy,
-// vector of 9 (BodySet::vector), one array row per body (BodySet::array), global restart record.
+// The output, integration and communication flags of a fix tdem/clump (an engine's Fix): scalar =
+// kinetic energy, vector of 9 (BodyOutput::vector), one array row per body (BodyOutput::array), a
+// global restart record (counts, flags) and per-atom records (the body state each sphere carries),
+// forward communication of the BodySet, exchange records.
 template <class FixT>
 void declare_clump_fix(FixT* f) {
   f->time_integrate = 1;
   f->restart_global = 1;
+  f->restart_peratom = 1;
+  f->comm_forward = BodySet::kCommMax;
   f->scalar_flag = 1;
   f->extscalar = 1;
   f->vector_flag = 1;
   f->size_vector = 9;
   f->extvector = 1;
   f->array_flag = 1;
-  f->size_array_cols = BodySet::kArrayColumns;
+  f->size_array_cols = BodyOutput::kArrayColumns;
   f->size_array_rows = 0;
   f->extarray = 0;
   f->global_freq = 1;
@@ -76,7 +82,7 @@ std::vector<double> form_rows(const BodySet& set, int nlocal, const int* mask, i
                               const double* radius) {
   std::vector<double> mine;
   for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit) || molecule[i] <= 0 || set.has_tag(tag[i])) continue;
+    if (!(mask[i] & groupbit) || molecule[i] <= 0 || set.is_sphere(i)) continue;
     double xu[3];
     unmap(i, xu);
     const double row[BodySet::kFormRow] = {static_cast<double>(tag[i]), static_cast<double>(molecule[i]), xu[0], xu[1],
@@ -119,7 +125,7 @@ bool sphere_inside(Match match, const Vec3& p, double r) {
 // bodies of `set` numbered after the largest tag and molecule ID of any rank. Throws if the
 // region has no bounding box.
 template <class AtomT, class RegionT, class MinImage>
-std::vector<NewSphere> insert_clumps(BodySet& set, const ClumpArgs& a, MPI_Comm world, const AtomT* atom,
+Inserted insert_clumps(BodySet& set, const ClumpArgs& a, MPI_Comm world, const AtomT* atom,
                                      RegionT* region, MinImage minimum_image, const Vec3& period) {
   if (!region->bboxflag)
     throw std::runtime_error(set.where() + ": insert region '" + a.insert_region +
@@ -141,9 +147,9 @@ std::vector<NewSphere> insert_clumps(BodySet& set, const ClumpArgs& a, MPI_Comm 
   };
   in.existing = all_spheres(world, atom->nlocal, atom->x, atom->radius);
   in.period = period;
-  return set.insert(in, Vec3{a.insert_vel[0], a.insert_vel[1], a.insert_vel[2]},
-                    max_over_ranks(world, atom->nlocal, atom->tag), max_over_ranks(world, atom->nlocal, atom->molecule),
-                    a.insert_region);
+  return insert_bodies(set, in, Vec3{a.insert_vel[0], a.insert_vel[1], a.insert_vel[2]},
+                       max_over_ranks(world, atom->nlocal, atom->tag), max_over_ranks(world, atom->nlocal, atom->molecule),
+                       a.insert_region);
 }
 
 // The box length of each periodic direction of an engine's Domain, else 0.
@@ -152,27 +158,52 @@ Vec3 periods(const DomainT* d) {
   return Vec3{d->xperiodic ? d->xprd : 0.0, d->yperiodic ? d->yprd : 0.0, d->zperiodic ? d->zprd : 0.0};
 }
 
-// A clump fix's global restart record: magic, body count, spheres per body, the fix's own flags,
-// then the bodies (BodySet::pack), written as the engines read it back (its size in bytes, then
-// the doubles). Rank 0 writes.
-inline void write_restart_record(std::FILE* fp, const BodySet& set, double magic, std::initializer_list<double> flags,
-                                 bool with_force) {
+// A clump fix's global restart record: magic, body count, spheres per body, the fix's own flags
+// (the bodies travel in the per-atom records, BodySet::pack_restart), written as the engines read
+// it back (its size in bytes, then the doubles). Rank 0 writes.
+inline void write_restart_record(std::FILE* fp, const BodySet& set, double magic, std::initializer_list<double> flags) {
   std::vector<double> buf = {magic, static_cast<double>(set.size()), static_cast<double>(set.nsph())};
   buf.insert(buf.end(), flags);
-  set.pack(buf, with_force);
   const int size = static_cast<int>(buf.size() * sizeof(double));
   std::fwrite(&size, sizeof(int), 1, fp);
   std::fwrite(buf.data(), sizeof(double), buf.size(), fp);
 }
 
-// Reads a record of write_restart_record() with nflags flags into set and flags; throws
-// `not_ours` if its magic differs.
-inline void read_restart_record(const char* raw, BodySet& set, double magic, double* flags, int nflags,
+// Reads a record of write_restart_record() with nflags flags into set and flags, or a record of the
+// global-bodies version (magic `legacy`: every body follows the flags, kRow or kRowForce doubles
+// with_force, and its tags; the bodies go to their spheres at the next set-up); throws `not_ours`
+// if the magic is neither.
+inline void read_restart_record(const char* raw, BodySet& set, double magic, double legacy, double* flags, int nflags,
                                 bool with_force, const std::string& not_ours) {
   const double* buf = reinterpret_cast<const double*>(raw);
-  if (buf[0] != magic) throw std::runtime_error(not_ours);
+  if (buf[0] != magic && buf[0] != legacy) throw std::runtime_error(not_ours);
   std::copy(buf + 3, buf + 3 + nflags, flags);
-  set.unpack(buf + 3 + nflags, static_cast<int>(buf[1]), static_cast<int>(buf[2]), with_force);
+  if (buf[0] == legacy) {
+    set.unpack_global_bodies(buf + 3 + nflags, static_cast<int>(buf[1]), static_cast<int>(buf[2]), with_force);
+    return;
+  }
+  if (static_cast<int>(buf[2]) != set.nsph())
+    throw std::runtime_error(set.where() + ": the restart file has clumps of " + std::to_string(static_cast<int>(buf[2])) +
+                             " spheres, template " + set.tmpl().name + " has " + std::to_string(set.nsph()));
+  set.set_size(static_cast<std::int64_t>(buf[1]));
+}
+
+// Bodies from the molecules of the group atoms that are not clump spheres yet (rows of form_rows()
+// of this rank): the rows and the keys of the existing bodies are gathered from every rank, every
+// rank fits the same bodies and gives them to the spheres it owns. Returns the number of new bodies.
+template <class TagT>
+int form_and_adopt(BodySet& set, MPI_Comm world, const std::vector<double>& mine, const std::string& group,
+                   int nlocal, const TagT* tag) {
+  std::vector<double> keys;  // the molecule IDs of the bodies whose spheres this rank owns
+  for (int i = 0; i < nlocal; i++)
+    if (set.is_sphere(i)) keys.push_back(static_cast<double>(set.body_key()[i]));
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  std::vector<std::int64_t> existing;
+  for (const double k : allgather_rows(world, keys)) existing.push_back(static_cast<std::int64_t>(k));
+  const std::vector<NewBody> made = form_bodies(set, allgather_rows(world, mine), group, existing);
+  set.adopt(made, nlocal, tag);
+  return static_cast<int>(made.size());
 }
 
 // Is the remapped point xw in the sub-domain [lo, hi)? top[d]: this rank holds the upper end of a
@@ -211,7 +242,7 @@ void set_spheres(const BodySet& set, AtomT* atom, const double* prd, const Image
 // else -1; the tag, molecule, group, radius, mass share, velocity and spin are set here. Returns
 // the number of spheres created on all ranks.
 template <class AtomT, class Create>
-std::int64_t create_spheres(const BodySet& set, AtomT* atom, const std::vector<NewSphere>& spheres, int groupbit,
+std::int64_t create_spheres(BodySet& set, AtomT* atom, const std::vector<NewSphere>& spheres, int groupbit,
                             MPI_Comm world, Create create) {
   using Tag = std::remove_reference_t<decltype(atom->tag[0])>;
   using Mol = std::remove_reference_t<decltype(atom->molecule[0])>;
@@ -228,6 +259,7 @@ std::int64_t create_spheres(const BodySet& set, AtomT* atom, const std::vector<N
       atom->v[n][d] = s.v[d];
       atom->omega[n][d] = 0.0;
     }
+    set.set_atom(n, s.mol, s.sphere, s.body);
     mine++;
   }
   MPI_Allreduce(&mine, &all, 1, MPI_INT64_T, MPI_SUM, world);

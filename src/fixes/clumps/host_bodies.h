@@ -72,29 +72,6 @@ inline std::vector<double> sphere_masses(const Template& t) {
 
 // ------------------------------------------------------------------ random orientation
 // Uniformly distributed unit quaternion from three uniforms (K. Shoemake, Graphics Gems III).
-// Per-atom body and sphere index of n atoms (owned first, then ghosts) from the map tag -> body *
-// nsph + sphere; a clump sphere gets the template radius and its mass share. Atoms without a slot
-// get -1, -1. Returns the number of clump spheres among the first nlocal atoms.
-template <class TagT, class SlotMap>
-int map_clump_atoms(int n, int nlocal, const TagT* tag, const SlotMap& slot, int nsph, const Template& t,
-                    const std::vector<double>& sphere_mass, int* bodyidx, int* sphidx, double* radius,
-                    double* rmass) {
-  int nmine = 0;
-  for (int i = 0; i < n; i++) {
-    auto it = slot.find(tag[i]);
-    if (it == slot.end()) {
-      bodyidx[i] = sphidx[i] = -1;
-      continue;
-    }
-    bodyidx[i] = it->second / nsph;
-    sphidx[i] = it->second % nsph;
-    radius[i] = t.body[sphidx[i]].r;
-    rmass[i] = sphere_mass[sphidx[i]];
-    if (i < nlocal) nmine++;
-  }
-  return nmine;
-}
-
 inline Quat random_orientation(SplitMix64& rng) {
   const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform();
   const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1), tau = 2.0 * M_PI;

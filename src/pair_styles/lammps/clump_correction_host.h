@@ -4,7 +4,7 @@
 // the pair and wall styles build (and run, without correction) when the clump module is off.
 //
 //   find_clump_correction   the clump fix and its correction (none when there is no clump fix)
-//   ClumpView               per-step pointers: body index per atom, body mass, com, inverse
+//   ClumpView               per-step pointers: body index and key per atom, body mass, com, inverse
 //                           inertia (space frame); inverse local mass of one side
 // The global contact counts and overlap sums come from clumps/contact_tally_mpi.h
 // (merge_over_ranks; exact fixed-point sums, independent of the rank split).
@@ -83,14 +83,16 @@ struct ClumpCorrection {
 
 // Per-step view of the clump fix's body data.
 struct ClumpView {
-  const int *body = nullptr;       // per atom (owned and ghost): body index or -1
-  const double *mass = nullptr;    // per body
-  const double *com = nullptr;     // 3 per body (local_mass)
-  const double *inv_i = nullptr;   // 9 per body (local_mass)
+  const int *body = nullptr;       // per atom (owned and ghost): local body index or -1
+  const std::int64_t *key = nullptr;  // per atom: the body's molecule ID (the same on every rank)
+  const double *mass = nullptr;    // per local body
+  const double *com = nullptr;     // 3 per local body (local_mass)
+  const double *inv_i = nullptr;   // 9 per local body (local_mass)
 
   void fetch(LAMMPS_NS::Fix *f, bool local_mass) {
     int dim = 0;
     body = (const int *) f->extract("tdem_clump_body", dim);
+    key = (const std::int64_t *) f->extract("tdem_clump_key", dim);
     mass = (const double *) f->extract("masstotal", dim);
     com = local_mass ? (const double *) f->extract("tdem_clump_com", dim) : nullptr;
     inv_i = local_mass ? (const double *) f->extract("tdem_clump_inv_inertia", dim) : nullptr;

@@ -248,7 +248,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
         }
         const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
         if (rsq > radius[i] * radius[i]) continue;
-        clump.tally.add((std::int64_t) cv.body[i], side, radius[i] - sqrt(rsq));
+        clump.tally.add(cv.key[i], side, radius[i] - sqrt(rsq));
       }
       clump.merge(world);
     }

@@ -141,6 +141,17 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Pair *pair)
 #endif
 }
 
+// forward communication of a fix's per-atom data (pack/unpack_forward_comm), size values per atom
+// at most (0: the fix's comm_forward)
+inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix, int size = 0)
+{
+#if defined(TDEM_LMP_COMM_OVERLOADS)
+  comm->forward_comm(fix, size);
+#else
+  comm->forward_comm_fix(fix, size);
+#endif
+}
+
 // every fix whose style matches the regular expression `style` (utils::strmatch), in fix order
 inline std::vector<LAMMPS_NS::Fix *> fixes_by_style(LAMMPS_NS::Modify *modify, const std::string &style)
 {

@@ -221,8 +221,9 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
           const double rs = radius[i] + radius[j];
           if (rsq >= rs * rs) continue;
           const double xi = rs - sqrt(rsq);
-          const std::int64_t a = cv.body[i] >= 0 ? (std::int64_t) cv.body[i] : -(std::int64_t) tag[i] - 1;
-          const std::int64_t b = cv.body[j] >= 0 ? (std::int64_t) cv.body[j] : -(std::int64_t) tag[j] - 1;
+          // sides: the body key (molecule ID, the same on every rank), a free sphere -(tag + 1)
+          const std::int64_t a = cv.body[i] >= 0 ? cv.key[i] : -(std::int64_t) tag[i] - 1;
+          const std::int64_t b = cv.body[j] >= 0 ? cv.key[j] : -(std::int64_t) tag[j] - 1;
           // newton off: a pair with a ghost j is also in the list of the rank (or image) owning
           // j; it is counted where tag[i] <= tag[j] (equal: two images of one sphere, two contacts)
           clump.tally.add(a, b, xi, newton_pair || j < nlocal || tag[i] <= tag[j]);

@@ -17,6 +17,11 @@
                the region, sphere distances of the template, uniformly random orientations; -np 2
                creates the same spheres
   bad_input    errors name the keyword, the value and what is allowed
+  ranks        local bodies (issue 20): a tetra pour and a pour of long rods (6 spheres, longer than
+               a sub-domain at 8 ranks; the fix raises the ghost cutoff) on -np 1, 2, 4 and 8
+               (oversubscribed): positions, velocities, spins and the fix's scalar, vector and
+               array output bitwise equal; bodies whose spheres lie on several ranks, in contact;
+               the rods with their local bodies rebuilt at every step equal the default run
 
 Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|local_mass):
   corr_flat        flat-face impacts, N = 2, 4, 8 spheres on a wall and a N = 4 body-body impact,
@@ -890,10 +895,96 @@ def part_corr_mpi():
               % worst)
 
 
+# ----------------------------------------------------------------------------- local bodies
+RANKS = """
+units si
+atom_style sphere
+boundary p p f
+newton off
+comm_modify vel yes
+atom_modify map array
+{procs}
+region box block 0 0.025 0 0.025 0 0.08
+create_box 1 box
+fix pm all property/atom mol ghost yes
+region ins block 0.0 0.025 0.0 0.025 0.003 0.045
+fix c all tdem/clump template t shape {shape} density 2500 insert {n} region ins seed 4711 vel 0 0 -1 \
+    correction {corr}
+neighbor 0.001 bin
+neigh_modify delay 0 exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4
+fix floor all tdem/wall/gran normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4 zplane 0 NULL
+fix g all gravity 9.81 vector 0 0 -1
+timestep 5e-6
+compute nc all contact/atom
+thermo_style custom step atoms f_c f_c[1] f_c[2] f_c[3] f_c[4] f_c[5] f_c[6] f_c[7] f_c[8] f_c[9] f_c[1][2] f_c[{last}][16]
+thermo_modify format float %.17g
+thermo 500
+dump d all custom {steps} d.np{np} id mol x y z vx vy vz omegax omegay omegaz c_nc proc
+dump_modify d sort id format float %.17g
+run {steps}
+"""
+PROCS = {1: "", 2: "processors 2 1 1", 4: "processors 2 2 1", 8: "processors 2 2 2"}
+
+
+def part_ranks():
+    wd = lc.workdir("clump_ranks")
+    scenes = [("tetra", "tetra 0.002 0.003", 40, 4, "none", 10000),
+              ("rods", "rod 0.0015 0.0025 6", 24, 6, "overlap", 10000)]
+    for name, shape, n, nsph, corr, steps in scenes:
+        ref = None
+        for np_ in (1, 2, 4, 8):
+            text = RANKS.format(procs=PROCS[np_], shape=shape, n=n, corr=corr, last=n, steps=steps, np=np_)
+            _, out = lc.run(TDEM, text, wd, "in.%s%d" % (name, np_), np_=np_, mpirun=MPIRUN, timeout=900)
+            os.replace(os.path.join(wd, "d.np%d" % np_), os.path.join(wd, "d.%s%d" % (name, np_)))
+            cols, a = lc.read_dump(os.path.join(wd, "d.%s%d" % (name, np_)))
+            thermo = lc.thermo_blocks(out)
+            if ref is None:
+                ref = (a, thermo, out)
+                chk.check(a.shape[0] == n * nsph, "%s: %d spheres" % (name, n * nsph))
+                if name == "rods":
+                    chk.check("ghost cutoff set to 0.0125" in out,
+                              "rods: the fix raises the ghost cutoff to the rod's length 0.0125 (log line)")
+                continue
+            same_atoms = a.shape == ref[0].shape and np.array_equal(a[:, :12], ref[0][:, :12])
+            same_thermo = thermo == ref[1]
+            # bodies whose spheres are owned by different ranks, in contact, at the end
+            split = split_contact = 0
+            for m in np.unique(a[:, 1]):
+                rows = a[a[:, 1] == m]
+                if len(np.unique(rows[:, cols.index("proc")])) > 1:
+                    split += 1
+                    split_contact += int(np.any(rows[:, cols.index("c_nc")] > 0))
+            print("%s -np %d: %d bodies split over ranks at the end, %d of them in contact" % (name, np_, split, split_contact))
+            if not same_atoms:
+                per, worst = lc.rel_diff(a[:, 2:11], ref[0][:, 2:11])
+                print("  differs from -np 1: max rel diff per column %s" % per)
+            chk.check(same_atoms, "%s: -np %d equals -np 1 bitwise after %d steps (x, v, omega of %d spheres)"
+                      % (name, np_, steps, n * nsph))
+            chk.check(same_thermo, "%s: -np %d: thermo of f_c (scalar, vector, array elements) bitwise equal to -np 1"
+                      % (name, np_))
+            chk.check(split_contact > 0, "%s: -np %d: bodies with spheres on several ranks and in contact (%d)"
+                      % (name, np_, split_contact))
+        chk.check(np.max(ref[0][:, cols.index("c_nc")]) > 0, "%s: contacts at the end" % name)
+    # the bodies survive the rebuilds of the local bodies unchanged: rods re-mapped at every step
+    # (each step an exchange) equal the default run (6000 steps: falling and the first contacts;
+    # later the pile amplifies the changed order of the pair sums)
+    runs = []
+    for tag, extra in (("a", ""), ("b", "neigh_modify every 1 delay 0 check no\n")):
+        text = RANKS.format(procs="", shape="rod 0.0015 0.0025 6", n=24, corr="none", last=24, steps=6000, np=tag)
+        lc.run(TDEM, text.replace("timestep 5e-6\n", "timestep 5e-6\n" + extra), wd, "in.rebuild" + tag)
+        runs.append(lc.read_dump(os.path.join(wd, "d.np" + tag))[1])
+    per, worst = lc.rel_diff(runs[1][:, 2:11], runs[0][:, 2:11])
+    chk.check(worst <= 1e-9 and np.sum(runs[0][:, 11]) > 0,
+              "rods rebuilt at every step equal the default run after 6000 steps with contacts (%.3g <= 1e-9)" % worst)
+
+
 PARTS = {"nve_single": part_nve_single, "free_body": part_free_body, "flat_impact": part_flat_impact,
          "mpi": part_mpi, "restart": part_restart, "insert": part_insert, "bad_input": part_bad_input,
          "corr_flat": part_corr_flat, "corr_continuity": part_corr_continuity,
-         "corr_local_mass": part_corr_local_mass, "corr_mpi": part_corr_mpi}
+         "corr_local_mass": part_corr_local_mass, "corr_mpi": part_corr_mpi,
+         "ranks": part_ranks}
 if part == "all":
     for f in PARTS.values():
         f()

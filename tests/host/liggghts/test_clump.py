@@ -248,7 +248,8 @@ def part_flatface(args, checks):
 
 
 # ----------------------------------------------------------------------------- (4, 5) pour
-def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40, correction=None):
+def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40, correction=None,
+               shape="tetra 0.003 0.0045"):
     """A box with 40 tetra clumps poured onto the floor. steps_b: a second run after write_restart."""
     lines = [HEAD]
     # the correction acts through the surface model tdem/clump (docs/clumps_liggghts.md)
@@ -266,15 +267,16 @@ def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40, correc
               "pair_style gran model tdem/hertz tangential tdem/cundall_strack%s limitForce on" % surf, "pair_coeff * *",
               "timestep 5e-6",
               "region ins block 0.005 0.055 0.005 0.055 0.01 0.11 units box",
-              "fix c all tdem/clump template t shape tetra 0.003 0.0045 density 2500 insert %d region ins seed 7 "
-              "vel 0 0 -0.5%s" % (nclump, " correction " + correction if correction else ""),
+              "fix c all tdem/clump template t shape %s density 2500 insert %d region ins seed 7 "
+              "vel 0 0 -0.5%s" % (shape, nclump, " correction " + correction if correction else ""),
               "fix gr all gravity 9.81 vector 0 0 -1"]
     for i, (dim, pos) in enumerate([("z", 0.0), ("x", 0.0), ("x", 0.06), ("y", 0.0), ("y", 0.06)]):
         lines.append("fix w%d all wall/gran model tdem/hertz tangential tdem/cundall_strack%s primitive type 1 %splane %g "
                      "limitForce on" % (i, surf, dim, pos))
     lines += ["dump d all custom 1000 dump.pour id mol x y z vx vy vz omegax omegay omegaz",
               "dump_modify d format \"%d %d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\"",
-              "thermo_style custom step atoms f_c f_c[1]", "thermo_modify format float %.17g", "thermo 1000",
+              "thermo_style custom step atoms f_c f_c[1] f_c[2] f_c[3] f_c[4] f_c[5] f_c[6] f_c[7] f_c[8] f_c[9] "
+              "f_c[1][2] f_c[%d][16]" % nclump, "thermo_modify format float %.17g", "thermo 1000",
               "run %d" % steps_a]
     if restart:
         lines.append("write_restart %s" % restart)
@@ -934,13 +936,65 @@ def part_corrsurf(args, checks):
                  "corrsurf: correction none: surface tdem/clump = surface default bitwise (%d rows)" % len(a))
 
 
+# ----------------------------------------------------------------------------- local bodies (issue 20)
+def thermo_lines(path):
+    rows, on = [], False
+    for line in open(path).read().splitlines():
+        w = line.split()
+        if w and w[0] == "Step":
+            on = True
+            continue
+        if on and w and w[0].isdigit():
+            rows.append(line)
+        elif on and line.startswith("Loop time"):
+            on = False
+    return rows
+
+
+def part_ranks(args, checks):
+    """Tetra clumps and long rods (6 spheres, longer than half a sub-domain at 8 ranks; the fix extends
+    the ghost cutoff) poured on -np 1, 2, 4 and 8 (processors 2 1 1, 2 2 1, 2 2 2): positions,
+    velocities, spins and the fix's output bitwise equal."""
+    grids = {1: "", 2: "processors 2 1 1\n", 4: "processors 2 2 1\n", 8: "processors 2 2 2\n"}
+    for name, shape, n, nsph, corr in (("tetra", "tetra 0.003 0.0045", 40, 4, None),
+                                       ("rods", "rod 0.002 0.0035 6", 24, 6, "overlap")):
+        ref = None
+        for np_ in (1, 2, 4, 8):
+            d = T.workdir(args, "tdem_lig_clump_ranks_%s%d" % (name, np_))
+            T.run(args.tdem, grids[np_] + pour_scene(NPOUR, nclump=n, correction=corr, shape=shape), d, "pour",
+                  np_=np_, mpirun=args.mpirun)
+            step, _, a = last_frame(d)
+            thermo = thermo_lines(os.path.join(d, "log.pour"))
+            if ref is None:
+                ref = (a, thermo)
+                fell = (T.read_dump(os.path.join(d, "dump.pour"))[0][2][:, 4] - a[:, 4]).max()
+                checks.check(step == NPOUR and a.shape[0] == n * nsph and fell > 0.01,
+                             "ranks %s: %d spheres fell %.3g m in %d steps" % (name, n * nsph, fell, NPOUR))
+                continue
+            split = 0
+            for m in np.unique(a[:, 1]):
+                p = a[a[:, 1] == m, 2:5]
+                for k, mid in ((0, 0.03), (1, 0.03), (2, 0.06)):
+                    if (np_ >= 2 and k == 0) or (np_ >= 4 and k == 1) or (np_ >= 8 and k == 2):
+                        if p[:, k].min() < mid < p[:, k].max():
+                            split += 1
+                            break
+            checks.check(np.array_equal(a, ref[0]), "ranks %s: -np %d equals -np 1 bitwise after %d steps (%d spheres)"
+                         % (name, np_, NPOUR, n * nsph))
+            checks.check(len(thermo) > 5 and thermo == ref[1],
+                         "ranks %s: -np %d: thermo of f_c (scalar, vector, array elements) bitwise equal to -np 1"
+                         % (name, np_))
+            checks.check(split > 0, "ranks %s: -np %d: %d bodies with spheres on several ranks at the end"
+                         % (name, np_, split))
+
+
 CORR_NPOUR = 10000
 
 
 def main():
     def extra(p):
         p.add_argument("--part", required=True,
-                       choices=["nve", "torquefree", "flatface", "parallel", "restart", "insert", "bad", "examples", "periodic",
+                       choices=["nve", "torquefree", "flatface", "parallel", "restart", "insert", "bad", "examples", "periodic", "ranks",
                                 "corrflat", "corrcont", "corrlocal", "corrpar", "corrstock", "corrsurf"])
     args = T.parse_args(extra)
     checks = T.Checks()

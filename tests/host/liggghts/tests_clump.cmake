@@ -1,13 +1,14 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 # fix tdem/clump for LIGGGHTS (module 'clump', src/fixes/clumps/liggghts; docs/clumps_liggghts.md): included by
 # tests/host/liggghts/CMakeLists.txt. One-sphere clumps = nve/sphere, torque-free asymmetric body,
-# flat-face impacts against the N-contact closed form, -np 2 = -np 1, restart, insertion, bad input;
+# flat-face impacts against the N-contact closed form, -np 2 = -np 1, -np 1/2/4/8 bitwise (ranks), restart,
+# insertion, bad input;
 # the multiple-contact correction (corr*: count/overlap flat impacts, continuity, local_mass, -np 2 and restart;
 # corrstock: the stock hertz model scaled through surface tdem/clump; corrsurf: the keyword's errors and warning).
 if(NOT TDEM_LIGGGHTS_CLUMP)
   return()
 endif()
-foreach(_part nve torquefree flatface parallel restart insert bad examples periodic
+foreach(_part nve torquefree flatface parallel restart insert bad examples periodic ranks
               corrflat corrcont corrlocal corrpar corrstock corrsurf)
   add_test(NAME liggghts.clump.${_part}
            COMMAND ${TDEM_LIGGGHTS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py --part ${_part}
@@ -18,4 +19,4 @@ foreach(_part nve torquefree flatface parallel restart insert bad examples perio
                        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
 set_tests_properties(liggghts.clump.parallel liggghts.clump.insert liggghts.clump.examples
-                     liggghts.clump.periodic liggghts.clump.corrpar PROPERTIES PROCESSORS 2)
+                     liggghts.clump.periodic liggghts.clump.corrpar liggghts.clump.ranks PROPERTIES PROCESSORS 2)

@@ -31,7 +31,8 @@ using namespace FixConst;
 namespace cl = tdem::clumps;
 
 namespace {
-constexpr double kRestartMagic = 20261129.0;
+constexpr double kRestartMagic = 20261205.0;        // local bodies: counts here, bodies per atom
+constexpr double kRestartMagicGlobal = 20261129.0;  // global bodies: every body in the record
 
 // Modify calls post_constructor() before restart(): whether the restart file read holds a global
 // record of this fix is looked up in Modify's list (protected members reached through pointers
@@ -71,9 +72,17 @@ FixTDEMClump::FixTDEMClump(LAMMPS *lmp, int narg, char **arg) :
   dynamic_group_allow = 0;
   size_array_rows_variable = 1;
   thermo_energy = 0;
+  maxexchange = cl::BodySet::kExchange;
+  grow_arrays(atom->nmax);
+  atom->add_callback(Atom::GROW);
+  atom->add_callback(Atom::RESTART);
 }
 
-FixTDEMClump::~FixTDEMClump() = default;
+FixTDEMClump::~FixTDEMClump()
+{
+  atom->delete_callback(id, Atom::GROW);
+  atom->delete_callback(id, Atom::RESTART);
+}
 
 /* ---------------------------------------------------------------------- */
 
@@ -115,15 +124,16 @@ void FixTDEMClump::insert_clumps()
   const std::string &rname = args.insert_region;
   Region *region = tdem_lammps::compat::region_by_id(domain, rname);
   if (!region) error->all(FLERR, where + ": insert region '" + rname + "' does not exist (keyword 'insert')");
-  std::vector<cl::NewSphere> spheres;
+  cl::Inserted ins;
   try {
     // the placement of the core (clump_host.h): the same seed gives the same clumps in both engines
-    spheres = cl::insert_clumps(
+    ins = cl::insert_clumps(
         bodies, args, world, atom, region,
         [&](double *d) { tdem_lammps::compat::minimum_image(domain, d[0], d[1], d[2]); }, cl::periods(domain));
   } catch (const std::exception &e) {
     error->all(FLERR, e.what());
   }
+  const std::vector<cl::NewSphere> &spheres = ins.spheres;
   size_array_rows = (int) bodies.size();
 
   // create the spheres this rank owns (the upper end of a non-periodic box belongs to its rank)
@@ -149,7 +159,7 @@ void FixTDEMClump::insert_clumps()
     atom->map_init();
     atom->map_set();
   }
-  if (comm->me == 0) utils::logmesg(lmp, bodies.inserted_message(args.ninsert, created, rname));
+  if (comm->me == 0) utils::logmesg(lmp, cl::inserted_message(bodies, ins, args.ninsert, created, rname));
 }
 
 // Bodies from the group's molecules that are not bodies yet (tag order = template order).
@@ -157,11 +167,11 @@ void FixTDEMClump::form_bodies()
 {
   const auto unmap = [&](int i, double *xu) { domain->unmap(atom->x[i], atom->image[i], xu); };
   try {
-    const int nnew = bodies.form(cl::allgather_rows(world, cl::form_rows(bodies, atom->nlocal, atom->mask, groupbit,
-                                                                          atom->tag, atom->molecule, unmap, atom->v,
-                                                                          atom->omega, atom->radius)),
-                                 group->names[igroup]);
-    if (comm->me == 0) utils::logmesg(lmp, bodies.formed_message(nnew, group->names[igroup]));
+    const int nnew = cl::form_and_adopt(bodies, world,
+                                        cl::form_rows(bodies, atom->nlocal, atom->mask, groupbit, atom->tag,
+                                                      atom->molecule, unmap, atom->v, atom->omega, atom->radius),
+                                        group->names[igroup], atom->nlocal, atom->tag);
+    if (comm->me == 0) utils::logmesg(lmp, cl::formed_message(bodies, nnew, group->names[igroup]));
   } catch (const std::exception &e) {
     error->all(FLERR, e.what());
   }
@@ -182,6 +192,15 @@ void FixTDEMClump::init()
   if (!excluded && bodies.nsph() > 1 && comm->me == 0)
     error->warning(FLERR, where + ": spheres of one clump interact with each other; add 'neigh_modify exclude "
                               "molecule/intra " + std::string(group->names[igroup]) + "'");
+  // a rank that owns a sphere of a body must see all its spheres: ghost cutoff >= reach
+  const double cutneigh = (force->pair ? force->pair->cutforce : 0.0) + neighbor->skin;
+  if (bodies.reach() > std::max(cutneigh, comm->cutghostuser)) {
+    comm->cutghostuser = bodies.reach();
+    if (comm->me == 0)
+      utils::logmesg(lmp, fmt::format("{}: ghost cutoff set to {} (the largest distance between two spheres of "
+                                      "template {}; the pair cutoff is {})\n",
+                                      where, bodies.reach(), bodies.tmpl().name, cutneigh));
+  }
   // another time integrator on the same atoms would move them twice
   for (int i = 0; i < modify->nfix; i++) {
     Fix *f = modify->fix[i];
@@ -189,7 +208,7 @@ void FixTDEMClump::init()
     int mine = 0, any = 0;
     for (int j = 0; j < atom->nlocal; j++)
       if ((atom->mask[j] & f->groupbit) &&
-          (bodies.has_tag(atom->tag[j]) ||
+          (bodies.is_sphere(j) ||
            (args.bodies_molecule && !formed && (atom->mask[j] & groupbit) && atom->molecule[j] > 0)))
         mine = 1;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
@@ -199,12 +218,24 @@ void FixTDEMClump::init()
   }
 }
 
-// Per-atom body and sphere index of owned and ghost atoms; sphere radius and mass from the template.
+// The local bodies after an exchange: per-atom body and sphere index of owned and ghost atoms;
+// sphere radius and mass from the template (body_set.h).
 void FixTDEMClump::map_atoms()
 {
-  const std::int64_t all = bodies.map_atoms(atom->nlocal + atom->nghost, atom->nlocal, atom->nmax, atom->tag,
-                                            atom->radius, atom->rmass, world);
-  if (all != (std::int64_t) bodies.size() * bodies.nsph()) error->all(FLERR, bodies.lost_message(all));
+  std::int64_t missing = -1;
+  const std::int64_t all = bodies.map_atoms(atom->nlocal, atom->nghost, atom->tag, atom->radius, atom->rmass, world,
+                                            [&](cl::BodySet::Comm c) { forward(c); }, missing);
+  if (missing >= 0)
+    error->all(FLERR, bodies.reach_message(missing, std::max(comm->cutghost[0],
+                                                             std::max(comm->cutghost[1], comm->cutghost[2]))));
+  if (all != bodies.size() * bodies.nsph()) error->all(FLERR, bodies.lost_message(all));
+  size_array_rows = (int) bodies.size();
+}
+
+void FixTDEMClump::forward(cl::BodySet::Comm c)
+{
+  bodies.set_comm(c);
+  tdem_lammps::compat::forward_comm(comm, this, cl::BodySet::comm_size(c));
 }
 
 void FixTDEMClump::setup_pre_neighbor()
@@ -213,12 +244,9 @@ void FixTDEMClump::setup_pre_neighbor()
     form_bodies();
     formed = 1;
     map_atoms();
-    bodies.refresh_kinematics();
     set_spheres(false);
   } else {
-    map_atoms();
-    // the pair and wall styles of the setup force evaluation need com and inertia (local_mass)
-    if (correction == (int) cl::Correction::local_mass) bodies.refresh_kinematics();
+    map_atoms();  // also com and inertia for the pair and wall styles' setup forces (local_mass)
   }
 }
 
@@ -231,8 +259,8 @@ void FixTDEMClump::setup(int /*vflag*/)
 {
   dtv = update->dt;
   dtf = 0.5 * update->dt * force->ftm2v;
-  bodies.refresh_kinematics();
-  bodies.sum_forces(atom->nlocal, atom->f, atom->torque, world);
+  bodies.refresh_kinematics([&](cl::BodySet::Comm c) { forward(c); });
+  bodies.sum_forces(atom->nlocal, atom->f, atom->torque, [&](cl::BodySet::Comm c) { forward(c); });
 }
 
 void FixTDEMClump::reset_dt()
@@ -249,13 +277,13 @@ void FixTDEMClump::set_spheres(bool positions)
 
 void FixTDEMClump::initial_integrate(int /*vflag*/)
 {
-  bodies.initial_integrate(dtv, 2.0 * dtf / dtv);  // 2 dtf / dtv = ftm2v
+  bodies.initial_integrate(dtv, 2.0 * dtf / dtv, [&](cl::BodySet::Comm c) { forward(c); });  // 2 dtf / dtv = ftm2v
   set_spheres(true);
 }
 
 void FixTDEMClump::final_integrate()
 {
-  bodies.sum_forces(atom->nlocal, atom->f, atom->torque, world);
+  bodies.sum_forces(atom->nlocal, atom->f, atom->torque, [&](cl::BodySet::Comm c) { forward(c); });
   bodies.final_integrate(dtv, 2.0 * dtf / dtv);
   set_spheres(false);
 }
@@ -264,24 +292,25 @@ void FixTDEMClump::final_integrate()
 
 double FixTDEMClump::compute_scalar()
 {
-  return bodies.kinetic_energy(force->mvv2e);
+  return reports.kinetic_energy(bodies, force->mvv2e, world);
 }
 
 // 1: bodies, 2-4: total momentum, 5-7: sum of the bodies' angular momenta about their com,
 // 8: translational, 9: rotational kinetic energy
 double FixTDEMClump::compute_vector(int n)
 {
-  return bodies.vector(n, force->mvv2e);
+  return reports.vector(bodies, n, force->mvv2e, world);
 }
 
-// row per body: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
+// row per body in molecule ID order: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
 double FixTDEMClump::compute_array(int i, int j)
 {
-  return bodies.array(i, j);
+  return reports.array(bodies, i, j, world);
 }
 
-// "body" / "tdem_clump_body": int per atom (owned and ghost), body index or -1;
-// "masstotal": double per body (as fix rigid, for the granular pair and wall styles);
+// "body" / "tdem_clump_body": int per atom (owned and ghost), local body index or -1;
+// "masstotal": double per local body (as fix rigid, for the granular pair and wall styles);
+// "tdem_clump_key": int64 per atom (owned and ghost), the body's molecule ID or -1;
 // "tdem_clump_correction": int (dim 0), the multiple-contact correction (tdem::clumps::Correction);
 // "tdem_clump_com", "tdem_clump_inv_inertia": double, 3 / 9 per body (local_mass only)
 void *FixTDEMClump::extract(const char *name, int &dim)
@@ -290,6 +319,7 @@ void *FixTDEMClump::extract(const char *name, int &dim)
   if (std::strcmp(name, "body") == 0 || std::strcmp(name, "tdem_clump_body") == 0) return (void *) bodies.body_index();
   if (std::strcmp(name, "masstotal") == 0) return (void *) bodies.masses();
   if (std::strcmp(name, "tdem_clump_sphere") == 0) return (void *) bodies.sphere_index();
+  if (std::strcmp(name, "tdem_clump_key") == 0) return (void *) bodies.body_key();
   if (std::strcmp(name, "tdem_clump_com") == 0) return (void *) bodies.com();
   if (std::strcmp(name, "tdem_clump_inv_inertia") == 0) return (void *) bodies.inverse_inertia();
   dim = 0;
@@ -299,17 +329,19 @@ void *FixTDEMClump::extract(const char *name, int &dim)
 
 /* ---------------------------------------------------------------------- */
 
-// magic, nbody, nsph, formed, then per body: mol, x, v, q, L, nsph tags (clump_host.h)
+// magic, nbody, nsph, formed (clump_host.h); the bodies are in the per-atom records
 void FixTDEMClump::write_restart(FILE *fp)
 {
-  if (comm->me == 0) cl::write_restart_record(fp, bodies, kRestartMagic, {(double) formed}, false);
+  if (comm->me == 0) cl::write_restart_record(fp, bodies, kRestartMagic, {(double) formed});
 }
 
+// this version's record, or one of the global-bodies version (every body, given to its spheres at
+// the next set-up)
 void FixTDEMClump::restart(char *raw)
 {
   double flag = 0.0;
   try {
-    cl::read_restart_record(raw, bodies, kRestartMagic, &flag, 1, false,
+    cl::read_restart_record(raw, bodies, kRestartMagic, kRestartMagicGlobal, &flag, 1, false,
                             where + ": the restart record is not a tdem/clump record");
   } catch (const std::exception &e) {
     error->all(FLERR, e.what());
@@ -319,7 +351,62 @@ void FixTDEMClump::restart(char *raw)
   restarted = 1;
 }
 
+/* ---------------------------------------------------------------------- per-atom data */
+
+void FixTDEMClump::grow_arrays(int nmax)
+{
+  bodies.grow(nmax);
+}
+
+void FixTDEMClump::copy_arrays(int i, int j, int /*delflag*/)
+{
+  bodies.copy_atom(i, j);
+}
+
+int FixTDEMClump::pack_exchange(int i, double *buf)
+{
+  return bodies.pack_exchange(i, buf);
+}
+
+int FixTDEMClump::unpack_exchange(int n, double *buf)
+{
+  return bodies.unpack_exchange(n, buf);
+}
+
+int FixTDEMClump::pack_restart(int i, double *buf)
+{
+  return bodies.pack_restart(i, buf);
+}
+
+void FixTDEMClump::unpack_restart(int n, int nth)
+{
+  double **extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[n][m]);
+  bodies.unpack_restart(n, &extra[n][m]);
+}
+
+int FixTDEMClump::size_restart(int i)
+{
+  return 1 + (bodies.is_sphere(i) ? cl::BodySet::kExchange : 1);
+}
+
+int FixTDEMClump::maxsize_restart()
+{
+  return cl::BodySet::kRestartMax;
+}
+
+int FixTDEMClump::pack_forward_comm(int n, int *list, double *buf, int /*pbc_flag*/, int * /*pbc*/)
+{
+  return bodies.pack_forward(n, list, buf);
+}
+
+void FixTDEMClump::unpack_forward_comm(int n, int first, double *buf)
+{
+  bodies.unpack_forward(n, first, buf);
+}
+
 double FixTDEMClump::memory_usage()
 {
-  return bodies.memory_usage();
+  return bodies.memory_usage() + reports.memory_usage();
 }

@@ -7,15 +7,18 @@
 //       [insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule]
 //       [correction none|count|overlap|local_mass]
 //
-// Design ("global bodies", as fix rigid; the bodies and their time stepping are shared with the
-// LIGGGHTS fix: src/fixes/clumps/body_set.h): every rank keeps the state {x, v, q, L} of every
-// body and advances every body identically; per-atom body indices (owned and ghost) are
-// refreshed in pre_neighbor. rigid_flag = 1 with extract("body") and
-// extract("masstotal"), so the granular pair and wall styles use the body mass as m*.
-// The multiple-contact correction (clumps/multi_contact.h) is applied by pair tdem/gran and fix
-// tdem/wall/gran, which read it with extract("tdem_clump_correction") and, for local_mass, the
-// per-body com ("tdem_clump_com", 3 per body, unwrapped) and inverse inertia in the space frame
-// ("tdem_clump_inv_inertia", 9 per body, row-major), current after initial_integrate.
+// Design ("local bodies", shared with the LIGGGHTS fix: src/fixes/clumps/body_set.h): a rank keeps
+// the bodies of the spheres it owns; the body state travels with the spheres (exchange and
+// per-atom restart records), the forces of ghost spheres come by forward communication, and
+// every rank holding a body advances it identically. The ghost cutoff is raised to the largest
+// distance between two spheres of the template when the pair cutoff is shorter.
+// rigid_flag = 1 with extract("body") and extract("masstotal") (per local body), so the granular
+// pair and wall styles use the body mass as m*. The multiple-contact correction
+// (clumps/multi_contact.h) is applied by pair tdem/gran and fix tdem/wall/gran, which read it with
+// extract("tdem_clump_correction"), the body key per atom ("tdem_clump_key", int64, the same on
+// every rank: the sides of the contact tally) and, for local_mass, the per-body com
+// ("tdem_clump_com", 3 per local body, unwrapped) and inverse inertia in the space frame
+// ("tdem_clump_inv_inertia", 9 per local body, row-major), current after initial_integrate.
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -29,6 +32,7 @@ FixStyle(tdem/clump,FixTDEMClump);
 #include "fix.h"
 
 #include "contact/multi_contact/multi_contact.h"
+#include "fixes/clumps/body_output.h"
 #include "fixes/clumps/body_set.h"
 #include "fixes/clumps/clump_args.h"
 
@@ -56,10 +60,21 @@ class FixTDEMClump : public Fix {
   void write_restart(FILE *) override;
   void restart(char *) override;
   double memory_usage() override;
+  void grow_arrays(int) override;
+  void copy_arrays(int, int, int) override;
+  int pack_exchange(int, double *) override;
+  int unpack_exchange(int, double *) override;
+  int pack_restart(int, double *) override;
+  void unpack_restart(int, int) override;
+  int size_restart(int) override;
+  int maxsize_restart() override;
+  int pack_forward_comm(int, int *, double *, int, int *) override;
+  void unpack_forward_comm(int, int, double *) override;
 
  private:
   std::string where;  // "fix ID tdem/clump" for messages
   tdem::clumps::BodySet bodies;      // the bodies, shared with LIGGGHTS (fixes/clumps/body_set.h)
+  tdem::clumps::BodyOutput reports;  // scalar, vector, array over the ranks
   tdem::clumps::ClumpArgs args;     // the fix's arguments (insert, bodies molecule, correction)
   int correction;                    // tdem::clumps::Correction, for the pair and wall styles
   int restarted;                     // bodies read from a restart file
@@ -71,6 +86,7 @@ class FixTDEMClump : public Fix {
   void form_bodies();
   void map_atoms();
   void set_spheres(bool positions);
+  void forward(tdem::clumps::BodySet::Comm c);
 };
 
 }  // namespace LAMMPS_NS

@@ -78,10 +78,15 @@ FixTDEMClump::FixTDEMClump(LAMMPS* lmp, int narg, char** arg)
 
   cl::declare_clump_fix(this);
   rigid_flag = 0;  // LIGGGHTS casts fixes with rigid_flag to FixRigid in places; the body mass is not passed
+  grow_arrays(atom->nmax);
+  atom->add_callback(0);  // grow
+  atom->add_callback(1);  // restart
 }
 
 FixTDEMClump::~FixTDEMClump() {
   if (tdem::liggghts::clump_link::active == this) tdem::liggghts::clump_link::active = nullptr;
+  atom->delete_callback(id, 0);
+  atom->delete_callback(id, 1);
 }
 
 void FixTDEMClump::fail(const std::string& msg) {
@@ -136,14 +141,15 @@ void FixTDEMClump::insert_clumps() {
   const int iregion = domain->find_region(rname.c_str());
   if (iregion < 0) fail(where_ + ": insert region '" + rname + "' does not exist (keyword 'insert')");
   Region* region = domain->regions[iregion];
-  std::vector<cl::NewSphere> spheres;
+  cl::Inserted ins;
   try {
     // the placement of the core (clump_host.h): the same seed gives the same clumps in both engines
-    spheres = cl::insert_clumps(bodies_, args_, world, atom, region,
+    ins = cl::insert_clumps(bodies_, args_, world, atom, region,
                                 [&](double* d) { domain->minimum_image(d[0], d[1], d[2]); }, cl::periods(domain));
   } catch (const std::exception& e) {
     fail(e.what());
   }
+  const std::vector<cl::NewSphere>& spheres = ins.spheres;
   size_array_rows = static_cast<int>(bodies_.size());
 
   // create the spheres this rank owns (the upper end of a non-periodic box belongs to its rank)
@@ -175,7 +181,7 @@ void FixTDEMClump::insert_clumps() {
     atom->map_init();
     atom->map_set();
   }
-  log(bodies_.inserted_message(args_.ninsert, created, rname));
+  log(cl::inserted_message(bodies_, ins, args_.ninsert, created, rname));
 }
 
 // Bodies from the group's molecules that are not bodies yet (atom ID order = template order).
@@ -183,24 +189,40 @@ int FixTDEMClump::form_bodies() {
   const auto unmap = [&](int i, double* xu) { domain->unmap(atom->x[i], atom->image[i], xu); };
   int nnew = 0;
   try {
-    nnew = bodies_.form(cl::allgather_rows(world, cl::form_rows(bodies_, atom->nlocal, atom->mask, groupbit, atom->tag,
-                                                                 atom->molecule, unmap, atom->v, atom->omega,
-                                                                 atom->radius)),
-                        group->names[igroup]);
+    nnew = cl::form_and_adopt(bodies_, world,
+                              cl::form_rows(bodies_, atom->nlocal, atom->mask, groupbit, atom->tag, atom->molecule,
+                                            unmap, atom->v, atom->omega, atom->radius),
+                              group->names[igroup], atom->nlocal, atom->tag);
   } catch (const std::exception& e) {
     fail(e.what());
   }
   size_array_rows = static_cast<int>(bodies_.size());
-  if (nnew > 0) log(bodies_.formed_message(nnew, group->names[igroup]));
+  if (nnew > 0) log(cl::formed_message(bodies_, nnew, group->names[igroup]));
   return nnew;
 }
 
-// Per-atom body and sphere index of owned and ghost atoms; sphere radius and mass from the template.
+// The local bodies after an exchange: per-atom body and sphere index of owned and ghost atoms;
+// sphere radius and mass from the template (body_set.h).
 void FixTDEMClump::map_atoms() {
-  const std::int64_t all = bodies_.map_atoms(atom->nlocal + atom->nghost, atom->nlocal, atom->nmax, atom->tag,
-                                             atom->radius, atom->rmass, world);
-  if (all != static_cast<std::int64_t>(bodies_.size()) * bodies_.nsph()) fail(bodies_.lost_message(all));
+  std::int64_t missing = -1;
+  const std::int64_t all = bodies_.map_atoms(atom->nlocal, atom->nghost, atom->tag, atom->radius, atom->rmass, world,
+                                             [&](cl::BodySet::Comm c) { forward(c); }, missing);
+  // LIGGGHTS's granular borders take atoms within cutghost / 2 + skin / 2 (+ their radius)
+  const double cut = std::min(comm->cutghost[0], std::min(comm->cutghost[1], comm->cutghost[2]));
+  if (missing >= 0) fail(bodies_.reach_message(missing, 0.5 * cut + 0.5 * neighbor->skin));
+  if (all != bodies_.size() * bodies_.nsph()) fail(bodies_.lost_message(all));
+  size_array_rows = static_cast<int>(bodies_.size());
 }
+
+void FixTDEMClump::forward(cl::BodySet::Comm c) {
+  bodies_.set_comm(c);
+  comm->forward_comm_fix(this);
+}
+
+// a rank that owns a sphere of a body must see all its spheres: LIGGGHTS's granular borders take the
+// atoms within cutghost / 2 + skin / 2 of a sub-domain, and Comm::setup makes cutghost at least this
+// plus the skin (as fix multisphere asks for twice its bounding radius)
+double FixTDEMClump::extend_cut_ghost() { return 2.0 * bodies_.reach(); }
 
 /* ---------------------------------------------------------------------- run */
 
@@ -225,7 +247,7 @@ void FixTDEMClump::init() {
     for (int g : NeighborExclusionPeek::molecule_groups(neighbor)) bits.push_back(group->bitmask[g]);
     int uncovered = 0, any = 0;
     for (int i = 0; i < atom->nlocal; i++) {
-      if (!bodies_.has_tag(atom->tag[i])) continue;
+      if (!bodies_.is_sphere(i)) continue;
       bool covered = false;
       for (int bit : bits)
         if (atom->mask[i] & bit) covered = true;
@@ -244,7 +266,7 @@ void FixTDEMClump::init() {
     int mine = 0, any = 0;
     for (int j = 0; j < atom->nlocal; j++)
       if ((atom->mask[j] & f->groupbit) &&
-          (bodies_.has_tag(atom->tag[j]) || (args_.bodies_molecule && (atom->mask[j] & groupbit) && atom->molecule[j] > 0)))
+          (bodies_.is_sphere(j) || (args_.bodies_molecule && (atom->mask[j] & groupbit) && atom->molecule[j] > 0)))
         mine = 1;
     MPI_Allreduce(&mine, &any, 1, MPI_INT, MPI_MAX, world);
     if (any)
@@ -256,7 +278,6 @@ void FixTDEMClump::init() {
 void FixTDEMClump::setup_pre_neighbor() {
   map_atoms();
   if (need_set_) {  // bodies just formed: sphere velocities of the rigid motion
-    bodies_.refresh_kinematics();
     set_spheres(false);
     need_set_ = false;
   }
@@ -267,8 +288,8 @@ void FixTDEMClump::pre_neighbor() { map_atoms(); }
 // The force of the last final_integrate if there is one (continuing run or restart), else the
 // set-up force.
 void FixTDEMClump::setup(int) {
-  bodies_.refresh_kinematics();
-  if (!have_force_) bodies_.sum_forces(atom->nlocal, atom->f, atom->torque, world);
+  bodies_.refresh_kinematics([&](cl::BodySet::Comm c) { forward(c); });
+  if (!have_force_) bodies_.sum_forces(atom->nlocal, atom->f, atom->torque, [&](cl::BodySet::Comm c) { forward(c); });
   have_force_ = true;
 }
 
@@ -280,12 +301,12 @@ void FixTDEMClump::set_spheres(bool positions) {
 }
 
 void FixTDEMClump::initial_integrate(int) {
-  bodies_.initial_integrate(update->dt, force->ftm2v);
+  bodies_.initial_integrate(update->dt, force->ftm2v, [&](cl::BodySet::Comm c) { forward(c); });
   set_spheres(true);
 }
 
 void FixTDEMClump::final_integrate() {
-  bodies_.sum_forces(atom->nlocal, atom->f, atom->torque, world);
+  bodies_.sum_forces(atom->nlocal, atom->f, atom->torque, [&](cl::BodySet::Comm c) { forward(c); });
   bodies_.final_integrate(update->dt, force->ftm2v);
   set_spheres(false);
 }
@@ -301,22 +322,24 @@ void FixTDEMClump::pre_force(int) {
 
 /* ---------------------------------------------------------------------- output */
 
-double FixTDEMClump::compute_scalar() { return bodies_.kinetic_energy(force->mvv2e); }
+double FixTDEMClump::compute_scalar() { return reports_.kinetic_energy(bodies_, force->mvv2e, world); }
 
 // [1] bodies, [2-4] total momentum, [5-7] sum of the bodies' angular momenta about their com,
 // [8] translational, [9] rotational kinetic energy
-double FixTDEMClump::compute_vector(int n) { return bodies_.vector(n, force->mvv2e); }
+double FixTDEMClump::compute_vector(int n) { return reports_.vector(bodies_, n, force->mvv2e, world); }
 
-// row per body: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
-double FixTDEMClump::compute_array(int i, int j) { return bodies_.array(i, j); }
+// row per body in molecule ID order: mol, x y z, vx vy vz, qw qx qy qz, Lx Ly Lz, wx wy wz
+double FixTDEMClump::compute_array(int i, int j) { return reports_.array(bodies_, i, j, world); }
 
-// "tdem_clump_body": int per atom (owned and ghost, valid after the first set-up), body index or -1;
+// "tdem_clump_body": int per atom (owned and ghost, valid after the first set-up), local body index or -1;
+// "tdem_clump_key": int64 per atom, the body's molecule ID or -1;
 // "tdem_clump_sphere": int per atom, sphere index in the template or -1;
 // "tdem_clump_mass": double, the body mass (dim 0)
 void* FixTDEMClump::extract(const char* name, int& dim) {
   dim = 1;
   if (std::strcmp(name, "tdem_clump_body") == 0) return static_cast<void*>(bodies_.body_index());
   if (std::strcmp(name, "tdem_clump_sphere") == 0) return static_cast<void*>(bodies_.sphere_index());
+  if (std::strcmp(name, "tdem_clump_key") == 0) return static_cast<void*>(bodies_.body_key());
   dim = 0;
   if (std::strcmp(name, "tdem_clump_mass") == 0) return const_cast<double*>(&bodies_.body().mass);
   return nullptr;
@@ -325,20 +348,22 @@ void* FixTDEMClump::extract(const char* name, int& dim) {
 /* ---------------------------------------------------------------------- restart */
 
 namespace {
-constexpr double kRestartMagic = 20261130.0;
+constexpr double kRestartMagic = 20261206.0;        // local bodies: counts here, bodies per atom
+constexpr double kRestartMagicGlobal = 20261130.0;  // global bodies: every body in the record
 }  // namespace
 
-// magic, nbody, nsph, formed, have_force, then per body: mol, x, v, q, L, F, T, nsph tags
-// (clump_host.h)
+// magic, nbody, nsph, formed, have_force (clump_host.h); the bodies (with their last force sums)
+// are in the per-atom records
 void FixTDEMClump::write_restart(FILE* fp) {
-  if (comm->me == 0)
-    cl::write_restart_record(fp, bodies_, kRestartMagic, {formed_ ? 1.0 : 0.0, have_force_ ? 1.0 : 0.0}, true);
+  if (comm->me == 0) cl::write_restart_record(fp, bodies_, kRestartMagic, {formed_ ? 1.0 : 0.0, have_force_ ? 1.0 : 0.0});
 }
 
+// this version's record, or one of the global-bodies version (every body, given to its spheres at
+// the next set-up)
 void FixTDEMClump::restart(char* raw) {
   double flags[2] = {0.0, 0.0};
   try {
-    cl::read_restart_record(raw, bodies_, kRestartMagic, flags, 2, true,
+    cl::read_restart_record(raw, bodies_, kRestartMagic, kRestartMagicGlobal, flags, 2, true,
                             where_ + ": the restart record is not a tdem/clump record of this version");
   } catch (const std::exception& e) {
     fail(e.what());
@@ -350,4 +375,35 @@ void FixTDEMClump::restart(char* raw) {
   log(where_ + ": " + std::to_string(bodies_.size()) + " bodies read from the restart file\n");
 }
 
-double FixTDEMClump::memory_usage() { return bodies_.memory_usage(); }
+double FixTDEMClump::memory_usage() { return bodies_.memory_usage() + reports_.memory_usage(); }
+
+/* ---------------------------------------------------------------------- per-atom data */
+
+void FixTDEMClump::grow_arrays(int nmax) { bodies_.grow(nmax); }
+
+void FixTDEMClump::copy_arrays(int i, int j, int) { bodies_.copy_atom(i, j); }
+
+int FixTDEMClump::pack_exchange(int i, double* buf) { return bodies_.pack_exchange(i, buf); }
+
+int FixTDEMClump::unpack_exchange(int n, double* buf) { return bodies_.unpack_exchange(n, buf); }
+
+int FixTDEMClump::pack_restart(int i, double* buf) { return bodies_.pack_restart(i, buf); }
+
+void FixTDEMClump::unpack_restart(int n, int nth) {
+  double** extra = atom->extra;
+  int m = 0;
+  for (int k = 0; k < nth; k++) m += static_cast<int>(extra[n][m]);
+  bodies_.unpack_restart(n, &extra[n][m]);
+}
+
+int FixTDEMClump::size_restart(int i) { return 1 + (bodies_.is_sphere(i) ? cl::BodySet::kExchange : 1); }
+
+int FixTDEMClump::maxsize_restart() { return cl::BodySet::kRestartMax; }
+
+// LIGGGHTS's forward communication wants the number of values per atom
+int FixTDEMClump::pack_comm(int n, int* list, double* buf, int, int*) {
+  bodies_.pack_forward(n, list, buf);
+  return cl::BodySet::comm_size(bodies_.comm());
+}
+
+void FixTDEMClump::unpack_comm(int n, int first, double* buf) { bodies_.unpack_forward(n, first, buf); }

@@ -11,10 +11,12 @@
 // Needs per-atom molecule IDs (atom_style hybrid sphere molecular) and
 // `neigh_modify exclude molecule GROUP` (the spheres of one clump must not interact).
 //
-// Design ("global bodies", as LAMMPS fix rigid; the bodies, their force sums and time stepping are
-// shared with the LAMMPS fix: src/fixes/clumps/body_set.h): every rank keeps and advances every
-// body; the force sums are bitwise independent of the rank count. Spheres of one body may lie on
-// several ranks; positions use the image flags (x = com + Lambda r_hat - image * L_box).
+// Design ("local bodies", shared with the LAMMPS fix: src/fixes/clumps/body_set.h): a rank keeps
+// the bodies of the spheres it owns; the body state travels with the spheres (exchange and
+// per-atom restart records), the forces of ghost spheres come by forward communication, and
+// every rank holding a body advances it identically, so the bodies are bitwise the same on any
+// number of ranks. extend_cut_ghost() makes the ghost cutoff at least the largest distance between
+// two spheres of the template. Positions use the image flags (x = com + Lambda r_hat - image * L_box).
 //
 // The force of the last final_integrate is kept (and written to restart files): a new run, or a run
 // after read_restart, starts with it instead of the set-up force, which in LIGGGHTS differs from it
@@ -33,6 +35,7 @@
 #include "contact/multi_contact/contact_tally.h"
 #include "contact/multi_contact/contact_tally_mpi.h"
 #include "contact/multi_contact/multi_contact.h"
+#include "fixes/clumps/body_output.h"
 #include "fixes/clumps/body_set.h"
 #include "fixes/clumps/clump_args.h"
 #include "tdem_liggghts_clump_link.h"
@@ -63,10 +66,22 @@ class FixTDEMClump : public Fix, public tdem::liggghts::clump_link::Correction {
   void write_restart(FILE*);
   void restart(char*);
   double memory_usage();
+  double extend_cut_ghost();
+  void grow_arrays(int);
+  void copy_arrays(int, int, int);
+  int pack_exchange(int, double*);
+  int unpack_exchange(int, double*);
+  int pack_restart(int, double*);
+  void unpack_restart(int, int);
+  int size_restart(int);
+  int maxsize_restart();
+  int pack_comm(int, int*, double*, int, int*);
+  void unpack_comm(int, int, double*);
 
  private:
   std::string where_;  // "fix ID tdem/clump" for messages
   tdem::clumps::BodySet bodies_;  // the bodies, shared with LAMMPS (fixes/clumps/body_set.h)
+  tdem::clumps::BodyOutput reports_;  // scalar, vector, array over the ranks
   tdem::clumps::ClumpArgs args_;  // the fix's arguments (insert, bodies molecule, correction)
   bool restarted_, formed_, have_force_, need_set_;
 
@@ -88,6 +103,7 @@ class FixTDEMClump : public Fix, public tdem::liggghts::clump_link::Correction {
   int form_bodies();
   void map_atoms();
   void set_spheres(bool positions);
+  void forward(tdem::clumps::BodySet::Comm c);
 };
 
 }  // namespace LAMMPS_NS

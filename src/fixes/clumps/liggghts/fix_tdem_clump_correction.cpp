@@ -40,7 +40,7 @@ namespace cl = tdem::clumps;
 using cl::Vec3;
 
 namespace {
-// side ids of the contact tally: body index >= 0, free sphere -(tag + 1), wall kWallSide + fix index
+// side ids of the contact tally: body key (molecule ID) >= 1, free sphere -(tag + 1), wall kWallSide + fix index
 constexpr std::int64_t kWallSide = std::int64_t(1) << 40;
 }  // namespace
 
@@ -98,9 +98,9 @@ void FixTDEMClump::build_tally() {
   const double* radius = atom->radius;
   const int* tag = atom->tag;
   const int* bodyidx = bodies_.body_index();
-  auto side = [&](int a) -> std::int64_t {
-    return bodyidx[a] >= 0 ? std::int64_t(bodyidx[a]) : -(std::int64_t(tag[a]) + 1);
-  };
+  const std::int64_t* key = bodies_.body_key();
+  // sides: the body key (molecule ID, the same on every rank), a free sphere -(tag + 1)
+  auto side = [&](int a) -> std::int64_t { return bodyidx[a] >= 0 ? key[a] : -(std::int64_t(tag[a]) + 1); };
   if (pair_gran_ && pair_gran_->list) {
     NeighList* list = pair_gran_->list;
     const bool newton = force->newton_pair != 0;
@@ -133,7 +133,7 @@ void FixTDEMClump::build_tally() {
       if (bodyidx[i] < 0 || !(mask[i] & bit)) continue;
       double delta[3];
       const double d = pw->resolveContact(x[i], radius[i], delta);
-      if (d <= 0.0) tally_.add(bodyidx[i], wall_sides_[w].second, -d);
+      if (d <= 0.0) tally_.add(key[i], wall_sides_[w].second, -d);
     }
   }
   cl::merge_over_ranks(tally_, world, exchange_);
@@ -157,7 +157,7 @@ double FixTDEMClump::prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sid
       sidata.meff = 1.0 / inverse_side_mass(i, sidata.en);
       return 1.0;
     }
-    a = bi;
+    a = bodies_.body_key()[i];
     b = -1;
     for (const auto& ws : wall_sides_)
       if (ws.first == owner) b = ws.second;
@@ -170,8 +170,9 @@ double FixTDEMClump::prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sid
       sidata.meff = 1.0 / (inverse_side_mass(i, sidata.en) + inverse_side_mass(j, sidata.en));
       return 1.0;
     }
-    a = bi >= 0 ? std::int64_t(bi) : -(std::int64_t(atom->tag[i]) + 1);
-    b = bj >= 0 ? std::int64_t(bj) : -(std::int64_t(atom->tag[j]) + 1);
+    const std::int64_t* key = bodies_.body_key();
+    a = bi >= 0 ? key[i] : -(std::int64_t(atom->tag[i]) + 1);
+    b = bj >= 0 ? key[j] : -(std::int64_t(atom->tag[j]) + 1);
   }
   return tally_.pair_factor(correction_, tally_.find(a, b), sidata.deltan);
 }
