@@ -41,6 +41,7 @@ Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|lo
 """
 import math
 import os
+import shutil
 import sys
 
 import numpy as np
@@ -420,6 +421,22 @@ def part_restart():
     _, c = lc.read_dump(os.path.join(wd, "d.lost"))
     _, worst_lost = lc.rel_diff(c[:, 2:12], a[:, 2:12])
     chk.check(worst_lost > 1e-6, "control: dropping the pair contact history changes the result (%.3g)" % worst_lost)
+    # a restart file of the global-bodies version (every body in the fix's global record; tdem before
+    # issue 20, commit 0fa3e78, at step 3000 of POUR on one rank: data/clump_global/pour_3000.restart):
+    # its bodies reach their spheres at the set-up; read on 2 ranks and continued, it equals this
+    # build's own run 3000 + write_restart + run 600
+    legacy = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "clump_global", "pour_3000.restart")
+    shutil.copy(legacy, os.path.join(wd, "legacy.restart"))
+    own = POUR + "run 3000\nwrite_restart own.restart\nrun 600\n" + DUMP.format(out="d.own")
+    lc.run(TDEM, own, wd, "in.own")
+    _, out = lc.run(TDEM, POUR_RESTART.replace("pour.restart", "legacy.restart").format(m=600, out="d.legacy"), wd,
+                    "in.legacy", np_=2, mpirun=MPIRUN)
+    _, a = lc.read_dump(os.path.join(wd, "d.own"))
+    _, b = lc.read_dump(os.path.join(wd, "d.legacy"))
+    per, worst = lc.rel_diff(b[:, 2:12], a[:, 2:12])
+    chk.check(a.shape == b.shape and worst <= 1e-10 and "'insert' is skipped" in out,
+              "a restart file of the global-bodies version, read on 2 ranks + run 600, equals this build's own "
+              "run 3000 + write_restart + run 600 (%.3g <= 1e-10)" % worst)
 
 
 # ----------------------------------------------------------------------------- 6. insertion

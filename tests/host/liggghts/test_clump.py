@@ -30,6 +30,7 @@ the code under test:
 """
 import math
 import os
+import shutil
 import sys
 
 import numpy as np
@@ -337,6 +338,17 @@ def part_restart(args, checks):
     diff = np.abs(a[2][:, 2:] - b[2][:, 2:]).max()
     print("restart: largest difference of x, v, omega after %d + %d steps vs %d: %.3e" % (half, NPOUR - half, NPOUR, diff))
     checks.check(diff == 0.0, "restart: continues identically (bitwise: %.1e)" % diff)
+    # a restart file of the global-bodies version (every body in the fix's global record; tdem before
+    # issue 20, commit 0fa3e78, at step 7000 of this pour on one rank: data/clump_global/pour_7000.restart),
+    # read on 2 ranks: the bodies reach their spheres at the set-up and the run continues identically
+    legacy = os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "clump_global", "pour_7000.restart")
+    shutil.copy(legacy, os.path.join(d, "legacy.restart"))
+    T.run(args.tdem, "processors 2 1 1\n" + pour_scene(NPOUR - half, read="legacy.restart"), d, "legacy", np_=2,
+          mpirun=args.mpirun)
+    c = T.read_dump(os.path.join(d, "dump.pour"))[-1]
+    diff = np.abs(a[2][:, 2:] - c[2][:, 2:]).max() if c[2].shape == a[2].shape else float("inf")
+    checks.check(half == 7000 and c[0] == NPOUR and diff == 0.0,
+                 "restart: a file of the global-bodies version, read on 2 ranks, continues identically (%.1e)" % diff)
 
 
 # ----------------------------------------------------------------------------- (6) insertion
