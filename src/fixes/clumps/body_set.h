@@ -144,7 +144,7 @@ class BodySet {
     const std::size_t n = static_cast<std::size_t>(std::max(nmax, 1));
     if (n <= key_.size()) return;
     key_.resize(n, -1), sidx_.resize(n, -1), bidx_.resize(n, -1);
-    pst_.resize(n * kState, 0.0), fs6_.resize(n * 6, 0.0);
+    pst_.resize(n * kState, 0.0), fs6_.resize(n * 6, 0.0), off_.resize(n * 3, 0.0);
   }
   void copy_atom(int i, int j) {  // atom i to slot j
     key_[j] = key_[i], sidx_[j] = sidx_[i], bidx_[j] = bidx_[i];
@@ -239,6 +239,7 @@ class BodySet {
                          Forward forward, std::int64_t& missing) {
     const int nall = nlocal + nghost;
     grow(nall);
+    nlocal_ = nlocal;
     if (!pending_.empty()) adopt_pending(nlocal, tag);
     std::vector<State> old_st;
     std::vector<double> old_f;
@@ -325,6 +326,13 @@ class BodySet {
       rot_[b] = rotation_matrix(st_[b].q);
       omg_[b] = omega_of(b);
     }
+    // the offset Lambda r_hat of every owned sphere, for set_spheres and sum_forces until the
+    // orientation changes again
+    for (int i = 0; i < nlocal_; i++)
+      if (bidx_[i] >= 0) {
+        const Vec3 r = offset(bidx_[i], sidx_[i]);
+        std::copy(r.begin(), r.end(), &off_[3 * static_cast<std::size_t>(i)]);
+      }
     if (!local_mass_) return;
     comm_ = Comm::pose;
     forward(Comm::pose);
@@ -358,9 +366,8 @@ class BodySet {
   template <class Forward>
   void sum_forces(int nlocal, double* const* f, double* const* t, Forward forward) {
     for (int i = 0; i < nlocal; i++) {
-      const int b = bidx_[i];
-      if (b < 0) continue;
-      const Vec3 r = offset(b, sidx_[i]);
+      if (bidx_[i] < 0) continue;
+      const double* r = &off_[3 * static_cast<std::size_t>(i)];
       double* fs = &fs6_[6 * static_cast<std::size_t>(i)];
       fs[0] = f[i][0];
       fs[1] = f[i][1];
@@ -389,7 +396,7 @@ class BodySet {
     for (int i = 0; i < nlocal; i++) {
       const int b = bidx_[i];
       if (b < 0) continue;
-      const Vec3 r = offset(b, sidx_[i]);
+      const double* r = &off_[3 * static_cast<std::size_t>(i)];
       if (positions) {
         int img[3];
         box(i, img);
@@ -439,7 +446,7 @@ class BodySet {
   }
 
   double memory_usage() const {
-    const double per_atom = sizeof(std::int64_t) + 2 * sizeof(int) + (kState + 6) * sizeof(double);
+    const double per_atom = sizeof(std::int64_t) + 2 * sizeof(int) + (kState + 9) * sizeof(double);
     const double per_body = sizeof(State) + sizeof(Mat3) + sizeof(Vec3) + 20 * sizeof(double) +
                             nsph_ * sizeof(int) + sizeof(std::int64_t) + 2 + 48;
     return static_cast<double>(key_.size()) * per_atom + static_cast<double>(st_.size()) * per_body +
@@ -524,7 +531,8 @@ class BodySet {
   // per atom
   std::vector<std::int64_t> key_;
   std::vector<int> bidx_, sidx_;
-  std::vector<double> pst_, fs6_;
+  std::vector<double> pst_, fs6_, off_;  // carried state, force and torque, offset Lambda r_hat
+  int nlocal_ = 0;                        // owned atoms at the last map_atoms
   // old restart files: tag -> body
   std::unordered_map<std::int64_t, Pending> pending_;
 

@@ -202,6 +202,19 @@ inline Quat dqdt(const Quat& q, const Vec3& omega) {  // (1/2) (0, omega) * q
 inline Quat axpy(const Quat& q, double h, const Quat& d) {
   return {q.w + h * d.w, q.x + h * d.x, q.y + h * d.y, q.z + h * d.z};
 }
+// One sub-rotation of the splitting scheme: the free rotation about body axis I for the time dt
+// (angle phi = dt pi_I / I_I): q <- q dq(phi e_I), pi turned by -phi about e_I.
+template <int I>
+inline void split_step(Quat& q, Vec3& pi, double dt, const Body& b) {
+  constexpr int J = (I + 1) % 3, L = (I + 2) % 3;
+  const double half = 0.5 * dt * pi[I] / b.inertia[I];
+  const double c = std::cos(half), sn = std::sin(half);
+  q = rotate_body_axis_cs(q, I, c, sn);
+  const double cphi = c * c - sn * sn, sphi = 2.0 * sn * c;
+  const double pj = pi[J], pl = pi[L];
+  pi[J] = cphi * pj + sphi * pl;
+  pi[L] = cphi * pl - sphi * pj;
+}
 }  // namespace detail
 
 inline void rotate(State& s, const Body& b, double h, Rotation scheme) {
@@ -214,20 +227,14 @@ inline void rotate(State& s, const Body& b, double h, Rotation scheme) {
     case Rotation::splitting: {
       // The body-frame angular momentum pi = Lambda^T L is formed once; a sub-rotation by phi about
       // body axis i turns it by -phi about that axis (L is fixed in space), so only its two other
-      // components change: one sin/cos pair per sub-rotation, no matrix per sub-step.
-      static const int axis[5] = {0, 1, 2, 1, 0};
-      static const double frac[5] = {0.5, 0.5, 1.0, 0.5, 0.5};
+      // components change: one sin/cos pair per sub-rotation, no matrix per sub-step. The five
+      // sub-rotations (axes 1, 2, 3, 2, 1) are written out (detail::split_step).
       Vec3 pi = body_angular_momentum(s);
-      for (int k = 0; k < 5; ++k) {
-        const int i = axis[k], j = (i + 1) % 3, l = (i + 2) % 3;
-        const double half = 0.5 * frac[k] * h * pi[i] / b.inertia[i];
-        const double c = std::cos(half), sn = std::sin(half);
-        s.q = detail::rotate_body_axis_cs(s.q, i, c, sn);
-        const double cphi = c * c - sn * sn, sphi = 2.0 * sn * c;
-        const double pj = pi[j], pl = pi[l];
-        pi[j] = cphi * pj + sphi * pl;
-        pi[l] = cphi * pl - sphi * pj;
-      }
+      detail::split_step<0>(s.q, pi, 0.5 * h, b);
+      detail::split_step<1>(s.q, pi, 0.5 * h, b);
+      detail::split_step<2>(s.q, pi, h, b);
+      detail::split_step<1>(s.q, pi, 0.5 * h, b);
+      detail::split_step<0>(s.q, pi, 0.5 * h, b);
       s.q = qnormalise(s.q);
       return;
     }
