@@ -4,7 +4,7 @@
 
 Runs input_scripts/liggghts/clumps_vs_multisphere.in (400 tetra-sphere clumps, r = 2 mm, edge 3 mm,
 density 2500, poured for 10000 steps into a 6 x 6 x 12 cm box, stock hertz + history for spheres and
-walls; serial, because the LIGGGHTS-PUBLIC fix multisphere is serial) with -var stock 0 (fix
+walls; on 1 rank - bench/clumps_scaling.py compares both fixes at 1 and 2 ranks) with -var stock 0 (fix
 tdem/clump) and -var stock 1 (fix multisphere), interleaved (T S S T T S ...), and reports
  * speed: the loop time LIGGGHTS prints (whole pour, insertion excluded), median over the rounds, and
    the ratio stock/tdem per round (> 1: tdem faster);
@@ -115,7 +115,7 @@ def main():
                               " ".join("%.2f" % x for x in os.getloadavg()), exe), "",
           "Scene: `input_scripts/liggghts/clumps_vs_multisphere.in`, %d tetra-sphere clumps (4 spheres r = 2 mm, "
           "edge 3 mm, density 2500), poured for %d steps of 1e-5 s, stock `hertz` + `history` for spheres and "
-          "walls, 1 rank (the stock fix is serial). Interleaved runs (tdem, stock, stock, tdem, then mirrored), "
+          "walls, 1 rank (1 and 2 ranks: bench/clumps_scaling.py). Interleaved runs (tdem, stock, stock, tdem, then mirrored), "
           "%d rounds, %.0f s in all." % (a.n, a.steps, a.rounds, wall), "",
           "| fix | loop time per run (s) | sphere-steps/s (median) | mass per clump (kg) | mean sphere z (m) | "
           "highest sphere z (m) | kinetic energy (J) | clumps |", "|---|---|---|---|---|---|---|---|"] + rows + [
