@@ -19,6 +19,25 @@
 namespace tdem {
 namespace clumps {
 
+// Rows of doubles of every rank, in rank order, on every rank (MPI_Allgatherv).
+inline std::vector<double> allgather_rows(MPI_Comm comm, const std::vector<double>& mine) {
+  int nprocs = 1;
+  MPI_Comm_size(comm, &nprocs);
+  int nme = static_cast<int>(mine.size());
+  std::vector<int> counts(nprocs), displs(nprocs);
+  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  int ntot = 0;
+  for (int p = 0; p < nprocs; p++) {
+    displs[p] = ntot;
+    ntot += counts[p];
+  }
+  std::vector<double> all(ntot > 0 ? ntot : 1);
+  MPI_Allgatherv(const_cast<double*>(mine.data()), nme, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                 MPI_DOUBLE, comm);
+  all.resize(ntot);
+  return all;
+}
+
 class BodyOutput {
  public:
   double kinetic_energy(const BodySet& set, double mvv2e, MPI_Comm world) { return totals(set, world)[9] * mvv2e; }
@@ -87,16 +106,8 @@ class BodyOutput {
                                          s.v[2], s.q.w, s.q.x, s.q.y, s.q.z, s.L[0], s.L[1], s.L[2], w[0], w[1], w[2]};
       mine.insert(mine.end(), row, row + kArrayColumns);
     }
-    int nprocs = 1;
-    MPI_Comm_size(world, &nprocs);
-    int nme = static_cast<int>(mine.size());
-    std::vector<int> counts(nprocs), displs(nprocs);
-    MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, world);
-    int ntot = 0;
-    for (int p = 0; p < nprocs; p++) displs[p] = ntot, ntot += counts[p];
-    std::vector<double> all(std::max(ntot, 1));
-    MPI_Allgatherv(mine.data(), nme, MPI_DOUBLE, all.data(), counts.data(), displs.data(), MPI_DOUBLE, world);
-    const std::size_t n = static_cast<std::size_t>(ntot) / kArrayColumns;
+    const std::vector<double> all = allgather_rows(world, mine);
+    const std::size_t n = all.size() / kArrayColumns;
     std::vector<std::size_t> order(n);
     for (std::size_t r = 0; r < n; r++) order[r] = r;
     std::sort(order.begin(), order.end(),

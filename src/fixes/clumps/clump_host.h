@@ -24,25 +24,6 @@
 namespace tdem {
 namespace clumps {
 
-// Rows of doubles of every rank, in rank order, on every rank (MPI_Allgatherv).
-inline std::vector<double> allgather_rows(MPI_Comm comm, const std::vector<double>& mine) {
-  int nprocs = 1;
-  MPI_Comm_size(comm, &nprocs);
-  int nme = static_cast<int>(mine.size());
-  std::vector<int> counts(nprocs), displs(nprocs);
-  MPI_Allgather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  int ntot = 0;
-  for (int p = 0; p < nprocs; p++) {
-    displs[p] = ntot;
-    ntot += counts[p];
-  }
-  std::vector<double> all(ntot > 0 ? ntot : 1);
-  MPI_Allgatherv(const_cast<double*>(mine.data()), nme, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  all.resize(ntot);
-  return all;
-}
-
 // The largest value of v[0..n) over all ranks (0 if there is none), as int64.
 template <class T>
 std::int64_t max_over_ranks(MPI_Comm comm, int n, const T* v) {
