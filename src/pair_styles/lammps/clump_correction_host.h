@@ -38,8 +38,9 @@ inline LAMMPS_NS::Fix *find_clump_correction(LAMMPS_NS::LAMMPS *lmp, const std::
   int nclump = 0;
   for (int i = 0; i < lmp->modify->nfix; i++) {
     LAMMPS_NS::Fix *f = lmp->modify->fix[i];
-    if (std::strcmp(f->style, "tdem/clump") != 0) continue;
-    nclump++;
+    const bool corr_only = std::strcmp(f->style, "tdem/correction") == 0;  // bodies of another fix
+    if (std::strcmp(f->style, "tdem/clump") != 0 && !corr_only) continue;
+    if (!corr_only) nclump++;
     int dim = 0;
     const int *c = (const int *) f->extract("tdem_clump_correction", dim);
     const int m = c ? *c : 0;

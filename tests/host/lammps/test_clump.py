@@ -35,6 +35,8 @@ Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|lo
                    sphere) with one sphere: with 'local_mass' the normal velocity of the contact
                    point after/before equals the law's e, with 'none' it does not (m_loc < M), as
                    the closed form of m_loc predicts
+  corr_stock       the correction with bodies of the stock fix rigid/small (fix tdem/correction): flat
+                   faces N = 2, 4, 8 on the wall and N = 4 body-body, the closed forms as corr_flat; bad input
   corr_mpi         pour of tetra clumps with 'overlap', 'count' and 'local_mass': -np 2 equals -np 1;
                    newton on equals newton off (pairs with a ghost partner counted once); restart
                    with 'overlap' continues identically; correction none is bitwise the default
@@ -997,11 +999,121 @@ def part_ranks():
               "rods rebuilt at every step equal the default run after 6000 steps with contacts (%.3g <= 1e-9)" % worst)
 
 
+# ----------------------------------------------------------------------------- 9. correction, stock bodies
+CORR_STOCK = """
+units si
+atom_style sphere
+atom_modify map array
+boundary f f f
+newton off
+comm_modify vel yes cutoff 0.03
+region box block -0.05 0.05 -0.05 0.05 0 0.05
+create_box 1 box
+fix pm all property/atom mol ghost yes
+read_data body.data add append fix pm NULL Molecules
+neigh_modify exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution {e} {tc} tangential cundall_strack 0.8 0
+fix rb all rigid/small molecule
+{corr}
+{wall}
+timestep {dt}
+group b1 molecule 1
+group b2 molecule 2
+variable z1 equal xcm(b1,z)
+variable v1 equal vcm(b1,z)
+variable z2 equal xcm(b2,z)
+variable v2 equal vcm(b2,z)
+thermo_style custom step v_z1 v_v1 {more}
+thermo_modify format float %.17g
+thermo 1
+run {n}
+"""
+
+
+def part_corr_stock():
+    """The correction with bodies of the stock fix rigid/small (fix tdem/correction, issue 20): flat-face
+    impacts N = 2, 4, 8 on the wall and N = 4 body-body give the single-contact e and t_c with count and
+    overlap, the N-contact closed form without the correction; bad input."""
+    wd = lc.workdir("clump_corr_stock")
+    e, tc, r, d, v0 = 0.8, 1e-4, 0.002, 0.0045, 1.0
+    dt = tc / 4000
+    z0 = r + 2e-6
+    wall = "fix w all tdem/wall/gran normal lsd restitution %g %g tangential cundall_strack 0.8 0 zplane 0 NULL" % (e, tc)
+    for corr in ("none", "count", "overlap"):
+        line = "" if corr == "none" else "fix corr all tdem/correction %s bodies rb" % corr
+        for n in (2, 4, 8):
+            write_flat(wd, n, r, d, [(z0, -v0)])
+            e_n, t_n = closed_form_n(e, tc, n)
+            e_ref, t_ref = (e_n, t_n) if corr == "none" else (e, tc)
+            nsteps = int((2e-6 + 1.3 * max(t_ref, tc)) / dt) + 200
+            _, out = lc.run(TDEM, CORR_STOCK.format(e=0.5, tc=tc, corr=line, wall=wall, dt=dt, more="", n=nsteps),
+                            wd, "in.s%s%d" % (corr, n))
+            rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+            t = rows[:, 0] * dt
+            ts, te, _, _ = crossing(t, r - rows[:, 1], dt)
+            e_m, t_m = rows[-1, 2] / v0, te - ts
+            ee, et = abs(e_m - e_ref) / e_ref, abs(t_m - t_ref) / t_ref
+            print("rigid/small, wall, correction %-7s N = %d: e %.6f t_c %.6e s; reference e %.6f t_c %.6e s: "
+                  "rel err %.2g %.2g" % (corr, n, e_m, t_m, e_ref, t_ref, ee, et))
+            chk.check(ee <= 1e-3 and et <= 1e-3, "rigid/small, wall N = %d, correction %s: e, t_c vs the %s closed "
+                      "form: rel err %.2g, %.2g (<= 1e-3)" % (n, corr, "N-contact" if corr == "none" else
+                                                              "single-contact", ee, et))
+    n = 4
+    for corr in ("none", "overlap"):
+        line = "" if corr == "none" else "fix corr all tdem/correction %s bodies rb" % corr
+        za = 0.01
+        write_flat(wd, n, r, d, [(za, 0.5 * v0), (za + 2 * r + 2e-6, -0.5 * v0)])
+        e_n, t_n = closed_form_n(e, tc, n)
+        e_ref, t_ref = (e_n, t_n) if corr == "none" else (e, tc)
+        nsteps = int((1e-6 + 1.3 * max(t_ref, tc)) / dt) + 200
+        _, out = lc.run(TDEM, CORR_STOCK.format(e=e, tc=tc, corr=line, wall="", dt=dt, more="v_z2 v_v2", n=nsteps),
+                        wd, "in.sb%s" % corr)
+        rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+        t = rows[:, 0] * dt
+        ts, te, _, _ = crossing(t, 2 * r - (rows[:, 3] - rows[:, 1]), dt)
+        e_m, t_m = (rows[-1, 4] - rows[-1, 2]) / v0, te - ts
+        ee, et = abs(e_m - e_ref) / e_ref, abs(t_m - t_ref) / t_ref
+        print("rigid/small, body-body, correction %-7s N = 4: e %.6f t_c %.6e s; reference e %.6f t_c %.6e s: "
+              "rel err %.2g %.2g" % (corr, e_m, t_m, e_ref, t_ref, ee, et))
+        chk.check(ee <= 1e-3 and et <= 1e-3, "rigid/small, body-body N = 4, correction %s: e, t_c vs the %s closed "
+                  "form: rel err %.2g, %.2g (<= 1e-3)" % (corr, "N-contact" if corr == "none" else "single-contact",
+                                                         ee, et))
+    # -np 2 (the body split over the ranks at x = 0): the same impact
+    write_flat(wd, 8, r, d, [(z0, -v0)])
+    nsteps = int((2e-6 + 1.3 * tc) / dt) + 200
+    outs = []
+    for np_ in (1, 2):
+        text = CORR_STOCK.format(e=0.5, tc=tc, corr="fix corr all tdem/correction overlap bodies rb", wall=wall, dt=dt,
+                                 more="", n=nsteps)
+        _, out = lc.run(TDEM, ("processors 2 1 1\n" if np_ == 2 else "") + text, wd, "in.snp%d" % np_, np_=np_,
+                        mpirun=MPIRUN)
+        outs.append(np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]]))
+    # (LAMMPS's xcm() and vcm() sum over the ranks in their order: round-off differs already at step 0)
+    per, worst = lc.rel_diff(outs[1][:, 1:], outs[0][:, 1:])
+    chk.check(outs[0].shape == outs[1].shape and worst <= 1e-12,
+              "rigid/small, wall N = 8, correction overlap: -np 2 equals -np 1 (com z and v_z at every step to "
+              "%.2g <= 1e-12, the round-off of xcm/vcm)" % worst)
+    # bad input names what is wrong
+    write_flat(wd, 2, r, d, [(z0, -v0)])
+    cases = [("fix corr all tdem/correction local_mass bodies rb", "allowed here: count, overlap"),
+             ("fix corr all tdem/correction half bodies rb", "correction 'half' is unknown; allowed: count, overlap"),
+             ("fix corr all tdem/correction overlap bodies nosuch", "fix nosuch does not exist"),
+             ("fix corr all tdem/correction overlap bodies w", "exports no rigid bodies"),
+             ("fix corr all tdem/correction overlap", "expected 3 arguments")]
+    for line, expect in cases:
+        rc, out = lc.run(TDEM, CORR_STOCK.format(e=e, tc=tc, corr=line, wall=wall, dt=dt, more="", n=10), wd,
+                         "in.sbad", check=False, timeout=120)
+        err = [l for l in out.splitlines() if "ERROR" in l]
+        chk.check(rc != 0 and rc < 128 and err and expect in " ".join(err),
+                  "%-50s -> %s" % (line[:50], err[0][:140] if err else "no error (rc %d)" % rc))
+
+
 PARTS = {"nve_single": part_nve_single, "free_body": part_free_body, "flat_impact": part_flat_impact,
          "mpi": part_mpi, "restart": part_restart, "insert": part_insert, "bad_input": part_bad_input,
          "corr_flat": part_corr_flat, "corr_continuity": part_corr_continuity,
          "corr_local_mass": part_corr_local_mass, "corr_mpi": part_corr_mpi,
-         "ranks": part_ranks}
+         "ranks": part_ranks, "corr_stock": part_corr_stock}
 if part == "all":
     for f in PARTS.values():
         f()

@@ -4,7 +4,7 @@ if(NOT TDEM_LAMMPS_CLUMP)
   return()
 endif()
 foreach(_p nve_single free_body flat_impact mpi restart insert bad_input
-          corr_flat corr_continuity corr_local_mass corr_mpi ranks)
+          corr_flat corr_continuity corr_local_mass corr_mpi ranks corr_stock)
   add_test(NAME ${_pfx}.clump.${_p}
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py ${_args} --part ${_p})
   set_tests_properties(${_pfx}.clump.${_p} PROPERTIES LABELS ${_lbl} TIMEOUT 600)
