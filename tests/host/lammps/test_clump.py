@@ -315,6 +315,16 @@ def part_flat_impact():
 
 
 # ----------------------------------------------------------------------------- 4./5. pour
+# the interactions of the pours (POUR, RANKS): lsd + Cundall-Strack between spheres and with the floor
+POUR_LAWS = """neighbor 0.001 bin
+neigh_modify delay 0 exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4
+fix floor all tdem/wall/gran normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4 zplane 0 NULL
+fix g all gravity 9.81 vector 0 0 -1
+timestep 5e-6
+compute nc all contact/atom
+"""
 POUR = """
 units si
 atom_style sphere
@@ -327,14 +337,7 @@ create_box 1 box
 fix pm all property/atom mol ghost yes
 region ins block 0.0 0.025 0.0 0.025 0.003 0.05
 fix c all tdem/clump template tet shape tetra 0.002 0.003 density 2500 insert 40 region ins seed 4711 vel 0 0 -1
-neighbor 0.001 bin
-neigh_modify delay 0 exclude molecule/intra all
-pair_style tdem/gran
-pair_coeff * * normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4
-fix floor all tdem/wall/gran normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4 zplane 0 NULL
-fix g all gravity 9.81 vector 0 0 -1
-timestep 5e-6
-compute nc all contact/atom
+""" + POUR_LAWS + """
 compute snc all reduce sum c_nc
 thermo_style custom step atoms f_c f_c[1] c_snc
 thermo_modify format float %.15g
@@ -929,15 +932,7 @@ fix pm all property/atom mol ghost yes
 region ins block 0.0 0.025 0.0 0.025 0.003 0.045
 fix c all tdem/clump template t shape {shape} density 2500 insert {n} region ins seed 4711 vel 0 0 -1 \
     correction {corr}
-neighbor 0.001 bin
-neigh_modify delay 0 exclude molecule/intra all
-pair_style tdem/gran
-pair_coeff * * normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4
-fix floor all tdem/wall/gran normal lsd restitution 0.6 1e-4 tangential cundall_strack 0.8 0.4 zplane 0 NULL
-fix g all gravity 9.81 vector 0 0 -1
-timestep 5e-6
-compute nc all contact/atom
-thermo_style custom step atoms f_c f_c[1] f_c[2] f_c[3] f_c[4] f_c[5] f_c[6] f_c[7] f_c[8] f_c[9] f_c[1][2] f_c[{last}][16]
+""" + POUR_LAWS + """thermo_style custom step atoms f_c f_c[1] f_c[2] f_c[3] f_c[4] f_c[5] f_c[6] f_c[7] f_c[8] f_c[9] f_c[1][2] f_c[{last}][16]
 thermo_modify format float %.17g
 thermo 500
 dump d all custom {steps} d.np{np} id mol x y z vx vy vz omegax omegay omegaz c_nc proc
@@ -1000,35 +995,16 @@ def part_ranks():
 
 
 # ----------------------------------------------------------------------------- 9. correction, stock bodies
-CORR_STOCK = """
-units si
-atom_style sphere
-atom_modify map array
-boundary f f f
-newton off
-comm_modify vel yes cutoff 0.03
-region box block -0.05 0.05 -0.05 0.05 0 0.05
-create_box 1 box
-fix pm all property/atom mol ghost yes
-read_data body.data add append fix pm NULL Molecules
-neigh_modify exclude molecule/intra all
-pair_style tdem/gran
-pair_coeff * * normal lsd restitution {e} {tc} tangential cundall_strack 0.8 0
-fix rb all rigid/small molecule
-{corr}
-{wall}
-timestep {dt}
-group b1 molecule 1
-group b2 molecule 2
-variable z1 equal xcm(b1,z)
-variable v1 equal vcm(b1,z)
-variable z2 equal xcm(b2,z)
-variable v2 equal vcm(b2,z)
-thermo_style custom step v_z1 v_v1 {more}
-thermo_modify format float %.17g
-thermo 1
-run {n}
-"""
+# the impact of CORR_IMPACT with the bodies of fix rigid/small (and its atom map and ghost cutoff)
+CORR_STOCK = (CORR_IMPACT.replace("atom_style sphere\n", "atom_style sphere\natom_modify map array\n")
+              .replace("comm_modify vel yes\n", "comm_modify vel yes cutoff 0.03\n")
+              .replace("fix c all tdem/clump template flat file flat.txt density 2500 {corr}\n",
+                       "fix rb all rigid/small molecule\n{corr}\n")
+              .replace("variable fz equal fcm(all,z)\nthermo_style custom step f_c[1][4] f_c[1][7] {more} v_fz\n",
+                       "group b1 molecule 1\ngroup b2 molecule 2\nvariable z1 equal xcm(b1,z)\n"
+                       "variable v1 equal vcm(b1,z)\nvariable z2 equal xcm(b2,z)\nvariable v2 equal vcm(b2,z)\n"
+                       "thermo_style custom step v_z1 v_v1 {more}\n"))
+
 
 
 def part_corr_stock():
