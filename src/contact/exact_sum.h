@@ -10,10 +10,12 @@
 // Infinities and NaNs are not representable: they make the sum NaN.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 namespace tdem {
 
@@ -96,6 +98,86 @@ class ExactSum {
   static std::int64_t floor_div(std::int64_t v) {  // floor(v / 2^32)
     return v >= 0 ? v >> 32 : -((-v + 0xffffffffLL) >> 32);
   }
+};
+
+}  // namespace tdem
+
+namespace tdem {
+
+// Sums of many groups of doubles (e.g. one per region) that do not depend on the order of the
+// additions, with a fixed window of kLimbs x 32 bits below the largest magnitude of each group
+// instead of ExactSum's whole double range (4 limbs = 32 bytes a group, so that 10^5 regions stay
+// small). Two passes: note() every value (or set the maxima directly), make the maxima global
+// (MPI_Allreduce MAX of maxima()), start(); then add() every value, make the limbs global
+// (MPI_Allreduce SUM of limbs()), value(). Each value is cut to the window before it is added
+// (bits below 2^(e_max - 124) of its group, with |value| < 2^e_max, are dropped toward zero), so
+// the result is the exact sum of the cut values: a function of the values alone, whatever the order
+// and the number of ranks. 2^31 additions per group cannot overflow.
+class WindowSums {
+ public:
+  static constexpr int kLimbs = 4;
+
+  explicit WindowSums(std::size_t groups = 0) { resize(groups); }
+  void resize(std::size_t groups) {
+    max_.assign(groups, 0.0);
+    base_.assign(groups, 0);
+    limbs_.assign(groups * kLimbs, 0);
+    bad_ = 0;
+  }
+  std::size_t groups() const { return max_.size(); }
+  void note(std::size_t g, double x) {
+    const double a = std::fabs(x);
+    if (!(a <= max_[g])) max_[g] = a;  // NaN and inf propagate as NaN/inf maxima
+  }
+  double* maxima() { return max_.data(); }
+  // fixes the window of every group from its (global) maximum
+  void start() {
+    for (std::size_t g = 0; g < max_.size(); ++g) {
+      int e = 0;
+      if (!std::isfinite(max_[g])) bad_ = 1;
+      else if (max_[g] > 0.0) std::frexp(max_[g], &e);  // max < 2^e
+      base_[g] = e - 32 * kLimbs + 4;  // the top limb keeps 4 spare bits below its 2^32
+    }
+  }
+  void add(std::size_t g, double x) {
+    if (x == 0.0) return;
+    if (!std::isfinite(x)) {
+      bad_ = 1;
+      return;
+    }
+    double s = std::ldexp(std::fabs(x), -base_[g]);  // < 2^(32 kLimbs - 4); exact unless it underflows
+    const std::int64_t sign = x < 0.0 ? -1 : 1;
+    std::int64_t* l = &limbs_[g * kLimbs];
+    for (int k = kLimbs - 1; k >= 0; --k) {  // s = sum_k q_k 2^(32 k): every step is exact
+      const double p = std::ldexp(1.0, 32 * k);
+      const double q = std::floor(s / p);
+      l[k] += sign * static_cast<std::int64_t>(q);
+      s -= q * p;
+    }
+  }
+  std::int64_t* limbs() { return limbs_.data(); }
+  std::size_t limb_count() const { return limbs_.size(); }
+  int* bad() { return &bad_; }
+  // the sum of group g (after the limbs are global): normalised carries, then the limbs from the top
+  double value(std::size_t g) const {
+    if (bad_) return std::numeric_limits<double>::quiet_NaN();
+    std::int64_t l[kLimbs];
+    std::copy_n(&limbs_[g * kLimbs], kLimbs, l);
+    for (int k = 0; k + 1 < kLimbs; ++k) {  // lower limbs in [0, 2^32), the top one takes the sign
+      const std::int64_t c = l[k] >= 0 ? l[k] >> 32 : -((-l[k] + 0xffffffffLL) >> 32);
+      l[k] -= c * (std::int64_t(1) << 32);
+      l[k + 1] += c;
+    }
+    double r = 0.0;
+    for (int k = kLimbs - 1; k >= 0; --k) r += std::ldexp(static_cast<double>(l[k]), 32 * k + base_[g]);
+    return r;
+  }
+
+ private:
+  std::vector<double> max_;
+  std::vector<int> base_;
+  std::vector<std::int64_t> limbs_;
+  int bad_ = 0;
 };
 
 }  // namespace tdem

@@ -33,6 +33,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
@@ -46,37 +47,28 @@ struct Periodic {
   bool on[3] = {false, false, false};
   double lo[3] = {0.0, 0.0, 0.0};
   double hi[3] = {0.0, 0.0, 0.0};
+  double length(int k) const { return hi[k] - lo[k]; }
 };
 
-// Uniform cell list over the axes with use[k] = true (other axes: one cell). The cells are at least
-// `cell` wide, so all points within `cell` (per axis) of a query point lie in the 3^d neighbouring cells.
+// Uniform cell list over the axes with use[k] = true (other axes: one cell), on the bounding box of
+// the points. The cells are at least `cell` wide, so all points within `cell` (per axis) of a query
+// point lie in the 3^d neighbouring cells. Periodicity is handled by the caller with images.
 class CellList {
  public:
-  CellList(std::size_t n, const double* x, double cell, const bool use[3], const Periodic& per) : x_(x), per_(per) {
+  CellList(std::size_t n, const double* x, double cell, const bool use[3]) : x_(x) {
     if (!(cell > 0.0) || !std::isfinite(cell)) bad_value("mixing cell list", "radius", cell, "(0, inf)");
     long total = 1;
     for (int k = 0; k < 3; ++k) {
       use_[k] = use[k];
-      if (!use[k]) {
-        nc_[k] = 1;
-        lo_[k] = 0.0;
-        size_[k] = 1.0;
-        continue;
+      if (!use[k]) continue;
+      double a = std::numeric_limits<double>::infinity(), b = -a;
+      for (std::size_t i = 0; i < n; ++i) {
+        a = std::min(a, x[3 * i + k]);
+        b = std::max(b, x[3 * i + k]);
       }
-      if (per.on[k]) {
-        lo_[k] = per.lo[k];
-        len_[k] = per.hi[k] - per.lo[k];
-        if (!(len_[k] > 0.0)) bad_value("mixing cell list", "periodic length", len_[k], "(0, inf)");
-      } else {
-        double a = std::numeric_limits<double>::infinity(), b = -a;
-        for (std::size_t i = 0; i < n; ++i) {
-          a = std::min(a, x[3 * i + k]);
-          b = std::max(b, x[3 * i + k]);
-        }
-        if (n == 0) a = b = 0.0;
-        lo_[k] = a;
-        len_[k] = b - a;
-      }
+      if (n == 0) a = b = 0.0;
+      lo_[k] = a;
+      len_[k] = b - a;
       nc_[k] = std::max(1L, static_cast<long>(std::floor(len_[k] / cell)));
       total *= nc_[k];
     }
@@ -92,58 +84,38 @@ class CellList {
     for (int k = 0; k < 3; ++k)
       if (use_[k]) size_[k] = len_[k] > 0.0 ? len_[k] / nc_[k] : 1.0;
     start_.assign(total + 1, 0);
-    cell_of_.resize(n);
+    std::vector<long> cell_of(n);
     for (std::size_t i = 0; i < n; ++i) {
-      cell_of_[i] = cell_index(x + 3 * i);
-      ++start_[cell_of_[i] + 1];
+      cell_of[i] = cell_index(x + 3 * i);
+      ++start_[cell_of[i] + 1];
     }
     for (long c = 0; c < total; ++c) start_[c + 1] += start_[c];
     items_.resize(n);
     std::vector<long> fill(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < n; ++i) items_[fill[cell_of_[i]]++] = i;
+    for (std::size_t i = 0; i < n; ++i) items_[fill[cell_of[i]]++] = i;
   }
 
-  // f(j, d) for every candidate j, d = x_j - p (minimum image on periodic axes).
+  // f(j) for every candidate j near the point p
   template <class F>
   void for_each_candidate(const double* p, F&& f) const {
-    long cells[3][3];
-    int ncand[3];
+    long from[3], to[3];
     for (int k = 0; k < 3; ++k) {
       const long c = axis_cell(p[k], k);
-      ncand[k] = 0;
-      if (!use_[k]) {
-        cells[k][ncand[k]++] = 0;
-      } else if (per_.on[k]) {
-        if (nc_[k] <= 3) {
-          for (long q = 0; q < nc_[k]; ++q) cells[k][ncand[k]++] = q;
-        } else {
-          for (long q = -1; q <= 1; ++q) cells[k][ncand[k]++] = ((c + q) % nc_[k] + nc_[k]) % nc_[k];
-        }
-      } else {
-        for (long q = std::max(0L, c - 1); q <= std::min(nc_[k] - 1, c + 1); ++q) cells[k][ncand[k]++] = q;
-      }
+      from[k] = std::max(0L, c - 1);
+      to[k] = std::min(nc_[k] - 1, c + 1);
     }
-    double d[3];
-    for (int a = 0; a < ncand[0]; ++a)
-      for (int b = 0; b < ncand[1]; ++b)
-        for (int c = 0; c < ncand[2]; ++c) {
-          const long cell = (cells[0][a] * nc_[1] + cells[1][b]) * nc_[2] + cells[2][c];
-          for (long q = start_[cell]; q < start_[cell + 1]; ++q) {
-            const std::size_t j = items_[q];
-            for (int k = 0; k < 3; ++k) {
-              d[k] = x_[3 * j + k] - p[k];
-              if (per_.on[k]) d[k] -= len_[k] * std::round(d[k] / len_[k]);
-            }
-            f(j, d);
-          }
+    for (long a = from[0]; a <= to[0]; ++a)
+      for (long b = from[1]; b <= to[1]; ++b)
+        for (long c = from[2]; c <= to[2]; ++c) {
+          const long cell = (a * nc_[1] + b) * nc_[2] + c;
+          for (long q = start_[cell]; q < start_[cell + 1]; ++q) f(items_[q]);
         }
   }
 
  private:
   long axis_cell(double v, int k) const {
     if (!use_[k]) return 0;
-    long c = static_cast<long>(std::floor((v - lo_[k]) / size_[k]));
-    if (per_.on[k]) return ((c % nc_[k]) + nc_[k]) % nc_[k];
+    const long c = static_cast<long>(std::floor((v - lo_[k]) / size_[k]));
     return std::max(0L, std::min(nc_[k] - 1, c));
   }
   long cell_index(const double* p) const {
@@ -151,13 +123,117 @@ class CellList {
   }
 
   const double* x_;
-  Periodic per_;
   bool use_[3] = {true, true, true};
   long nc_[3] = {1, 1, 1};
   double lo_[3] = {0, 0, 0}, len_[3] = {0, 0, 0}, size_[3] = {1, 1, 1};
-  std::vector<long> start_, cell_of_;
+  std::vector<long> start_;
   std::vector<std::size_t> items_;
 };
+
+// ---------------------------------------------------------------- periodic images, point clouds
+// A periodic image of a point is named by a code: (s0 + 1) + 3 (s1 + 1) + 9 (s2 + 1), where s_k in
+// {-1, 0, 1} box lengths are added along axis k; kNoShift = the point itself.
+constexpr int kNoShift = 13;
+
+inline void image_position(const double* x, int code, const Periodic& per, double* out) {
+  for (int k = 0; k < 3; ++k) {
+    const int s = code % 3 - 1;
+    code /= 3;
+    out[k] = s ? x[k] + s * per.length(k) : x[k];
+  }
+}
+
+// f(code) for every image of p (shifts along the periodic axes only, the point itself included)
+// whose distance to the box [lo, hi] over the axes with use[k] is <= r: Euclidean (euclid) or per axis.
+template <class F>
+void for_each_image_near(const double* p, const Periodic& per, const double* lo, const double* hi, double r,
+                         const bool use[3], bool euclid, F&& f) {
+  for (int code = 0; code < 27; ++code) {
+    double q[3], sum = 0.0;
+    bool near = true;
+    int c = code;
+    for (int k = 0; k < 3 && near; ++k, c /= 3) {
+      const int s = c % 3 - 1;
+      if (s != 0 && !per.on[k]) near = false;
+      q[k] = s ? p[k] + s * per.length(k) : p[k];
+      if (!use[k]) continue;
+      const double gap = q[k] < lo[k] ? lo[k] - q[k] : (q[k] > hi[k] ? q[k] - hi[k] : 0.0);
+      if (euclid) sum += gap * gap;
+      else if (gap > r) near = false;
+    }
+    if (near && (!euclid || sum <= r * r)) f(code);
+  }
+}
+
+inline void bounding_box(std::size_t n, const double* x, double* lo, double* hi) {
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::numeric_limits<double>::infinity();
+    hi[k] = -lo[k];
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = std::min(lo[k], x[3 * i + k]);
+      hi[k] = std::max(hi[k], x[3 * i + k]);
+    }
+}
+
+// The points of a neighbourhood evaluation: the first n_eval are evaluated (as themselves), all n
+// are neighbours: the particles of this rank, periodic images and the particles of other ranks
+// near them (a halo). Positions are as the particles have them; image codes say where a copy sits.
+struct Cloud {
+  std::size_t n = 0, n_eval = 0;
+  const double* x = nullptr;   // n x 3
+  const int* image = nullptr;  // n image codes (nullptr: all kNoShift)
+  const double* id = nullptr;  // n particle ids: neighbour sums are taken in id order (nullptr: index)
+};
+
+// A single set of n particles (all evaluated) with the images of its own particles that lie within
+// r of its bounding box, for the serial evaluation of periodic boxes. source[q] = particle of point q.
+struct SelfCloud {
+  std::vector<double> x, id;
+  std::vector<int> image;
+  std::vector<std::size_t> source;
+  Cloud cloud() const { return Cloud{source.size(), n_eval, x.data(), image.data(), id.data()}; }
+  std::size_t n_eval = 0;
+};
+
+inline SelfCloud self_cloud(std::size_t n, const double* x, const Periodic& per, double r, const bool use[3],
+                            bool euclid) {
+  SelfCloud s;
+  s.n_eval = n;
+  double lo[3], hi[3];
+  bounding_box(n, x, lo, hi);
+  auto put = [&](std::size_t i, int code) {
+    s.x.insert(s.x.end(), x + 3 * i, x + 3 * i + 3);
+    s.id.push_back(static_cast<double>(i));
+    s.image.push_back(code);
+    s.source.push_back(i);
+  };
+  for (std::size_t i = 0; i < n; ++i) put(i, kNoShift);
+  if (per.on[0] || per.on[1] || per.on[2])
+    for (std::size_t i = 0; i < n; ++i)
+      for_each_image_near(x + 3 * i, per, lo, hi, r, use, euclid, [&](int code) {
+        if (code != kNoShift) put(i, code);
+      });
+  return s;
+}
+
+// positions at which the points of the cloud sit (their image positions)
+inline std::vector<double> cloud_positions(const Cloud& c, const Periodic& per) {
+  std::vector<double> b(c.x, c.x + 3 * c.n);
+  if (c.image)
+    for (std::size_t q = 0; q < c.n; ++q)
+      if (c.image[q] != kNoShift) image_position(c.x + 3 * q, c.image[q], per, &b[3 * q]);
+  return b;
+}
+
+// d = x_j - x_i with the minimum image along the periodic axes (the same operations for any cloud)
+inline void min_image(const double* xj, const double* xi, const Periodic& per, double* d) {
+  for (int k = 0; k < 3; ++k) {
+    d[k] = xj[k] - xi[k];
+    if (per.on[k]) d[k] -= per.length(k) * std::round(d[k] / per.length(k));
+  }
+}
 
 inline void check_periodic(const Periodic& per, double r, const char* what) {
   for (int k = 0; k < 3; ++k)
@@ -190,26 +266,37 @@ struct LocalVelocity {
   std::vector<int> neighbours;  // |N_i| (>= 1)
 };
 
-inline LocalVelocity local_velocity(std::size_t n, const double* x, const double* v, double r_v,
-                                    const Periodic& per = Periodic{}) {
+// vbar, vtil of the first c.n_eval points of the cloud; v holds the velocities of all c.n points.
+// A particle present as several copies (images) counts once: the copy that sits at its minimum image.
+// The neighbour velocities are summed in the order of the particle ids, so the result depends only
+// on the particles, not on how they are spread over ranks.
+inline LocalVelocity local_velocity(const Cloud& c, const double* v, double r_v, const Periodic& per) {
   if (!(r_v > 0.0) || !std::isfinite(r_v)) bad_value("mixing", "radius (evaluation radius r_v)", r_v, "(0, inf)");
   check_periodic(per, r_v, "r_v");
+  const std::vector<double> b = cloud_positions(c, per);
   const bool use[3] = {true, true, true};
-  CellList cl(n, x, r_v, use, per);
+  CellList cl(c.n, b.data(), r_v * (1.0 + 1e-9), use);  // margin for the round-off of image positions
   LocalVelocity out;
-  out.mean.assign(3 * n, 0.0);
-  out.fluct.assign(3 * n, 0.0);
-  out.neighbours.assign(n, 0);
+  out.mean.assign(3 * c.n_eval, 0.0);
+  out.fluct.assign(3 * c.n_eval, 0.0);
+  out.neighbours.assign(c.n_eval, 0);
   const double r2 = r_v * r_v;
-  for (std::size_t i = 0; i < n; ++i) {
-    double s[3] = {0.0, 0.0, 0.0};
-    int cnt = 0;
-    cl.for_each_candidate(x + 3 * i, [&](std::size_t j, const double* d) {
-      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= r2) {
-        for (int k = 0; k < 3; ++k) s[k] += v[3 * j + k];
-        ++cnt;
-      }
+  std::vector<std::pair<double, std::size_t>> nb;
+  for (std::size_t i = 0; i < c.n_eval; ++i) {
+    const double* p = c.x + 3 * i;
+    nb.clear();
+    cl.for_each_candidate(p, [&](std::size_t j) {
+      double d[3];
+      min_image(c.x + 3 * j, p, per, d);
+      for (int k = 0; k < 3; ++k)
+        if (per.on[k] && std::fabs(b[3 * j + k] - p[k] - d[k]) > 0.5 * per.length(k)) return;  // another copy
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= r2) nb.emplace_back(c.id ? c.id[j] : double(j), j);
     });
+    std::sort(nb.begin(), nb.end());
+    double s[3] = {0.0, 0.0, 0.0};
+    for (const auto& e : nb)
+      for (int k = 0; k < 3; ++k) s[k] += v[3 * e.second + k];
+    const int cnt = static_cast<int>(nb.size());
     out.neighbours[i] = cnt;
     for (int k = 0; k < 3; ++k) {
       out.mean[3 * i + k] = s[k] / cnt;
@@ -217,6 +304,16 @@ inline LocalVelocity local_velocity(std::size_t n, const double* x, const double
     }
   }
   return out;
+}
+
+// all n particles evaluated; periodic axes by the images of the particles themselves
+inline LocalVelocity local_velocity(std::size_t n, const double* x, const double* v, double r_v,
+                                    const Periodic& per = Periodic{}) {
+  const bool use[3] = {true, true, true};
+  const SelfCloud s = self_cloud(n, x, per, r_v * (1.0 + 1e-9), use, true);
+  std::vector<double> vs(3 * s.source.size());
+  for (std::size_t q = 0; q < s.source.size(); ++q) std::copy_n(v + 3 * s.source[q], 3, &vs[3 * q]);
+  return local_velocity(s.cloud(), vs.data(), r_v, per);
 }
 
 // Running sums of the fluctuations of one region; merge() adds snapshots or processors.
@@ -283,7 +380,14 @@ struct Depths {
   std::vector<double> bottom;   // b_i
 };
 
-inline Depths particle_depths(std::size_t n, const double* x, const double* radius, const DepthOptions& o) {
+// the column of the depth evaluation: transport and lateral axes
+inline void depth_axes(const DepthOptions& o, bool use[3]) {
+  use[0] = use[1] = use[2] = false;
+  use[o.transport_axis] = true;
+  if (o.lateral_axis >= 0) use[o.lateral_axis] = true;
+}
+
+inline void check_depth_options(const DepthOptions& o) {
   const std::string c = "mixing depth";
   for (int a : {o.transport_axis, o.up_axis})
     if (a < 0 || a > 2) bad_value(c, "axis", a, "{0, 1, 2}");
@@ -294,36 +398,59 @@ inline Depths particle_depths(std::size_t n, const double* x, const double* radi
     bad_value(c, "column (column width)", o.column_width, "(0, inf)");
   if (!o.grate_height) throw std::invalid_argument("mixing depth: no grate height function given");
   check_periodic(o.periodic, 0.5 * o.column_width, "c/2");
-  bool use[3] = {false, false, false};
-  use[o.transport_axis] = true;
-  if (o.lateral_axis >= 0) use[o.lateral_axis] = true;
+}
+
+// the periodic axes of the depth evaluation (never the up axis)
+inline Periodic depth_periodic(const DepthOptions& o) {
   Periodic per = o.periodic;
   per.on[o.up_axis] = false;
+  return per;
+}
+
+// D of the first c.n_eval points of the cloud (radius: their radii); the surface s_i is the highest
+// centre of all points of the cloud in the column of i (a maximum: any copy, any order gives the same).
+inline Depths particle_depths(const Cloud& c, const double* radius, const DepthOptions& o) {
+  check_depth_options(o);
+  bool use[3];
+  depth_axes(o, use);
+  const Periodic per = depth_periodic(o);
   const double h = 0.5 * o.column_width;
-  CellList cl(n, x, h, use, per);
+  const std::vector<double> b = cloud_positions(c, per);
+  CellList cl(c.n, b.data(), h * (1.0 + 1e-9), use);
   Depths out;
-  out.depth.resize(n);
-  out.surface.resize(n);
-  out.bottom.resize(n);
+  out.depth.resize(c.n_eval);
+  out.surface.resize(c.n_eval);
+  out.bottom.resize(c.n_eval);
   const int t = o.transport_axis, u = o.up_axis, l = o.lateral_axis;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double* p = x + 3 * i;
+  for (std::size_t i = 0; i < c.n_eval; ++i) {
+    const double* p = c.x + 3 * i;
     double s = p[u];
-    cl.for_each_candidate(p, [&](std::size_t j, const double* d) {
-      if (std::fabs(d[t]) <= h && (l < 0 || std::fabs(d[l]) <= h)) s = std::max(s, x[3 * j + u]);
+    cl.for_each_candidate(p, [&](std::size_t j) {
+      double d[3];
+      min_image(c.x + 3 * j, p, per, d);
+      if (std::fabs(d[t]) <= h && (l < 0 || std::fabs(d[l]) <= h)) s = std::max(s, c.x[3 * j + u]);
     });
-    const double b = o.grate_height(p[t], l >= 0 ? p[l] : 0.0) + radius[i];
+    const double bot = o.grate_height(p[t], l >= 0 ? p[l] : 0.0) + radius[i];
     out.surface[i] = s;
-    out.bottom[i] = b;
+    out.bottom[i] = bot;
     const double depth = s - p[u];
     if (!o.normalise) {
       out.depth[i] = depth;
     } else {
-      const double bed = s - b;
+      const double bed = s - bot;
       out.depth[i] = bed > 0.0 ? std::max(0.0, std::min(1.0, depth / bed)) : 0.0;
     }
   }
   return out;
+}
+
+// all n particles evaluated; periodic axes by the images of the particles themselves
+inline Depths particle_depths(std::size_t n, const double* x, const double* radius, const DepthOptions& o) {
+  check_depth_options(o);
+  bool use[3];
+  depth_axes(o, use);
+  const SelfCloud s = self_cloud(n, x, depth_periodic(o), 0.5 * o.column_width * (1.0 + 1e-9), use, false);
+  return particle_depths(s.cloud(), radius, o);
 }
 
 // Accumulates depth trajectories over snapshots (by particle id) and per region.

@@ -3,9 +3,10 @@
 //   compute ID group tdem/mixing/velocity radius R_V bins AXIS LO HI N [periodic AXIS ...] [exclude GROUP]
 //   fix ID group tdem/mixing/depth every N column C bins AXIS LO HI NB (grate FIXID | floor H)
 //       [normalise yes|no] [up AXIS] [lateral AXIS|none] [file NAME]
-// Argument parsing (std::invalid_argument naming keyword, value and allowed values), the MPI gather
-// of the per-particle rows in atom-id order (the same array on every rank, independent of the domain
-// decomposition) and the evaluation with the core of mixing.h.
+// Argument parsing (std::invalid_argument naming keyword, value and allowed values) and the parallel
+// evaluation: each rank evaluates the atoms it owns with the core of mixing.h and a halo of the
+// atoms of other ranks (mixing_parallel.h); the region sums are reduced independently of the order,
+// so the output is bitwise the same for any domain decomposition.
 #pragma once
 
 #include <mpi.h>
@@ -21,6 +22,7 @@
 #include <vector>
 
 #include "fixes/mixing/mixing.h"
+#include "fixes/mixing/mixing_parallel.h"
 
 namespace tdem {
 namespace grate {
@@ -220,78 +222,89 @@ inline DepthConfig parse_depth(const std::vector<std::string>& a, const std::str
   return c;
 }
 
-// ------------------------------------------------------------------ MPI gather
-// Rows of `width` doubles with row[0] = atom id, from all ranks; returned sorted by id, identical on
-// every rank. Cost: O(N width) memory and communication per call on every rank (MPI_Allgatherv).
-inline std::vector<double> allgather_sorted(MPI_Comm comm, const std::vector<double>& local, int width) {
-  int nprocs = 1;
-  MPI_Comm_size(comm, &nprocs);
-  int mine = static_cast<int>(local.size());
-  std::vector<int> counts(nprocs), displs(nprocs, 0);
-  MPI_Allgather(&mine, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  long total = 0;
-  for (int p = 0; p < nprocs; ++p) {
-    displs[p] = static_cast<int>(total);
-    total += counts[p];
-  }
-  if (total > 2147483647L) throw std::runtime_error("mixing: too many particles for one MPI_Allgatherv");
-  std::vector<double> all(static_cast<std::size_t>(total));
-  MPI_Allgatherv(const_cast<double*>(local.data()), mine, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
-                 MPI_DOUBLE, comm);
-  const std::size_t n = all.size() / width;
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return all[a * width] < all[b * width]; });
-  std::vector<double> out(all.size());
-  for (std::size_t q = 0; q < n; ++q) std::copy_n(all.begin() + order[q] * width, width, out.begin() + q * width);
-  return out;
-}
-
-// row of the atom with the given id in the sorted rows (binary search), -1 if absent
-inline long find_row(const std::vector<double>& rows, int width, double id) {
-  std::size_t lo = 0, hi = rows.size() / width;
-  while (lo < hi) {
-    const std::size_t m = (lo + hi) / 2;
-    if (rows[m * width] < id) lo = m + 1;
-    else hi = m;
-  }
-  if (lo < rows.size() / width && rows[lo * width] == id) return static_cast<long>(lo);
-  return -1;
-}
-
 // ------------------------------------------------------------------ velocity based
-// Row layout: id, x, y, z, vx, vy, vz, include (1/0)
+// Row layout of a rank's atoms: id, x, y, z, vx, vy, vz, include (1/0)
 constexpr int kVelocityWidth = 8;
 constexpr int kVelocityCols = 5;  // count, p_x, p_y, p_z, P'
 
-// Table of (bins + 1) rows x 5 columns, row-major; the last row pools all bins.
-inline std::vector<double> velocity_table(const std::vector<double>& rows, const VelocityConfig& c,
-                                          const Periodic& per) {
-  const std::size_t n = rows.size() / kVelocityWidth;
-  std::vector<double> x(3 * n), v(3 * n);
-  std::vector<unsigned char> inc(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double* r = &rows[i * kVelocityWidth];
-    for (int k = 0; k < 3; ++k) {
-      x[3 * i + k] = r[1 + k];
-      v[3 * i + k] = r[4 + k];
+// Table of (bins + 1) rows x 5 columns, row-major (the last row pools all bins), from the rows of
+// the atoms this rank owns; each rank evaluates its own atoms with a halo (mixing_parallel.h).
+// Collective; the table is the same on every rank and for any number of ranks.
+inline std::vector<double> velocity_table(MPI_Comm comm, const std::vector<double>& owned, const VelocityConfig& c,
+                                          const Periodic& per, HaloCount& hc) {
+  const int W = kVelocityWidth;
+  const std::size_t n = owned.size() / W;
+  // the evaluated atoms (included, inside the bins) first
+  std::vector<double> rows;
+  rows.reserve(owned.size());
+  std::size_t n_eval = 0;
+  for (int pass = 1; pass >= 0; --pass)
+    for (std::size_t j = 0; j < n; ++j) {
+      const double* r = &owned[j * W];
+      const bool eval = r[7] != 0.0 && c.bins.index(r + 1) >= 0;
+      if (eval != (pass == 1)) continue;
+      rows.insert(rows.end(), r, r + W);
+      n_eval += eval;
     }
-    inc[i] = r[7] != 0.0;
+  std::vector<double> xe(3 * n_eval);
+  for (std::size_t j = 0; j < n_eval; ++j) std::copy_n(&rows[j * W + 1], 3, &xe[3 * j]);
+  const std::vector<RankBox> boxes = gather_boxes(comm, n_eval, xe.data());
+  const bool use[3] = {true, true, true};
+  const Halo halo = exchange_halo(comm, rows, W, boxes, per, c.radius * (1.0 + 1e-9), use, true,
+                                  [](std::size_t, int) { return true; });
+  const std::size_t m = n + halo.image.size();
+  std::vector<double> x(3 * m), v(3 * m), id(m);
+  std::vector<int> image(m, kNoShift);
+  for (std::size_t q = 0; q < m; ++q) {
+    const double* r = q < n ? &rows[q * W] : &halo.rows[(q - n) * W];
+    id[q] = r[0];
+    std::copy_n(r + 1, 3, &x[3 * q]);
+    std::copy_n(r + 4, 3, &v[3 * q]);
+    if (q >= n) image[q] = halo.image[q - n];
   }
-  const std::vector<VelocityStats> st = velocity_mixing(n, x.data(), v.data(), c.radius, c.bins, per, inc.data());
+  hc.owned = static_cast<long>(n);
+  hc.halo = static_cast<long>(m - n);
+  const LocalVelocity lv = local_velocity(Cloud{m, n_eval, x.data(), image.data(), id.data()}, v.data(), c.radius, per);
+  // region sums: per bin the sums of vtil_k and vtil_k^2 (groups 6 b + k, 6 b + 3 + k) and the count
+  const int nb = c.bins.count;
+  WindowSums ws(6 * static_cast<std::size_t>(nb));
+  std::vector<long long> count(nb, 0);
+  std::vector<int> bin(n_eval);
+  for (std::size_t i = 0; i < n_eval; ++i) {
+    bin[i] = c.bins.index(&x[3 * i]);
+    ++count[bin[i]];
+  }
+  auto each = [&](auto&& f) {
+    for (std::size_t i = 0; i < n_eval; ++i)
+      for (int k = 0; k < 3; ++k) {
+        const double vt = lv.fluct[3 * i + k];
+        f(6 * bin[i] + k, vt);
+        f(6 * bin[i] + 3 + k, vt * vt);
+      }
+  };
+  reduce_window_sums(
+      comm, ws, [&] { each([&](std::size_t g, double val) { ws.note(g, val); }); },
+      [&] { each([&](std::size_t g, double val) { ws.add(g, val); }); });
+  MPI_Allreduce(MPI_IN_PLACE, count.data(), nb, MPI_LONG_LONG, MPI_SUM, comm);
   VelocityStats all;
-  std::vector<double> out((c.bins.count + 1) * kVelocityCols);
+  std::vector<double> out((nb + 1) * kVelocityCols);
   auto put = [&](int row, const VelocityStats& s) {
     double* o = &out[row * kVelocityCols];
     o[0] = static_cast<double>(s.n);
     for (int k = 0; k < 3; ++k) o[1 + k] = s.p(k);
     o[4] = s.P();
   };
-  for (int b = 0; b < c.bins.count; ++b) {
-    put(b, st[b]);
-    all.merge(st[b]);
+  for (int b = 0; b < nb; ++b) {
+    VelocityStats s;
+    s.n = static_cast<long>(count[b]);
+    for (int k = 0; k < 3; ++k) {
+      s.sum[k] = ws.value(6 * b + k);
+      s.sumsq[k] = ws.value(6 * b + 3 + k);
+    }
+    put(b, s);
+    all.merge(s);
   }
-  put(c.bins.count, all);
+  put(nb, all);
   return out;
 }
 
@@ -300,8 +313,6 @@ inline std::vector<double> velocity_table(const std::vector<double>& rows, const
 //   samples, sum D, sum D^2, last D, last time, sum |dD|, sum dt, last region (-1 none), last snapshot (0 never)
 constexpr int kStateWidth = 9;
 enum State { S_SAMPLES, S_SUM_D, S_SUM_D2, S_LAST_D, S_LAST_T, S_SUM_ABS, S_SUM_DT, S_LAST_REGION, S_LAST_SNAP };
-// Row layout of the gather: id, x, y, z, radius, state[9]
-constexpr int kDepthWidth = 5 + kStateWidth;
 // Per-atom output: D now, Dbar, sigma_D, Q'
 constexpr int kPeratomCols = 4;
 // Global output per bin (+ all bins): count, mean D, mean sigma_D, Q', sigma of the D samples, samples
@@ -323,48 +334,99 @@ struct RegionSums {
   static constexpr int kRestartPerRegion = 5;  // total_abs, total_dt, samples, sum_d, sum_d2
 };
 
-// One snapshot at time t (snapshot index k >= 1): D of every row (into depth), the per-particle
-// state of every row and the region sums are updated exactly as DepthTrajectories::add does.
-inline void depth_snapshot(std::vector<double>& rows, const DepthOptions& o, const Bins& bins, double t, long k,
-                           RegionSums& rs, std::vector<double>& depth) {
-  const std::size_t n = rows.size() / kDepthWidth;
-  std::vector<double> x(3 * n), rad(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    for (int q = 0; q < 3; ++q) x[3 * i + q] = rows[i * kDepthWidth + 1 + q];
-    rad[i] = rows[i * kDepthWidth + 4];
+// One snapshot at time t (snapshot index k >= 1) of the n atoms of the group this rank owns: ids,
+// positions (n x 3), radii and their state (n x kStateWidth, updated as DepthTrajectories::add
+// does); D of each atom into depth; the region sums rs get the global sums of the snapshot.
+// Collective; each rank evaluates its own atoms with a thinned halo (mixing_parallel.h).
+inline void depth_snapshot(MPI_Comm comm, std::size_t n, const double* id, const double* x, const double* radius,
+                           double* state, const DepthOptions& o, const Bins& bins, double t, long k, RegionSums& rs,
+                           std::vector<double>& depth, HaloCount& hc) {
+  check_depth_options(o);
+  bool use[3];
+  depth_axes(o, use);
+  const Periodic per = depth_periodic(o);
+  const int u = o.up_axis;
+  const std::vector<RankBox> boxes = gather_boxes(comm, n, x);
+  const std::vector<unsigned char> top = column_candidates(n, x, o, per);
+  std::vector<double> rows(4 * n);
+  for (std::size_t j = 0; j < n; ++j) {
+    rows[4 * j] = id[j];
+    std::copy_n(x + 3 * j, 3, &rows[4 * j + 1]);
   }
-  depth = particle_depths(n, x.data(), rad.data(), o).depth;
-  rs.region.resize(bins.count);
-  rs.count_now.assign(bins.count, 0);
-  rs.sigma_now.assign(bins.count, 0.0);
+  const Halo halo = exchange_halo(comm, rows, 4, boxes, per, 0.5 * o.column_width * (1.0 + 1e-9), use, false,
+                                  [&](std::size_t j, int q) { return top[j] && x[3 * j + u] > boxes[q].lo[u]; });
+  const std::size_t m = n + halo.image.size();
+  std::vector<double> xc(x, x + 3 * n), idc(id, id + n);
+  std::vector<int> image(n, kNoShift);
+  for (std::size_t q = 0; q < halo.image.size(); ++q) {
+    idc.push_back(halo.rows[4 * q]);
+    xc.insert(xc.end(), &halo.rows[4 * q + 1], &halo.rows[4 * q + 4]);
+    image.push_back(halo.image[q]);
+  }
+  hc.owned = static_cast<long>(n);
+  hc.halo = static_cast<long>(m - n);
+  depth = particle_depths(Cloud{m, n, xc.data(), image.data(), idc.data()}, radius, o).depth;
+
+  // the state of every atom; the contributions of this snapshot to the regions
+  const int nb = bins.count;
+  std::vector<int> from(n, -1), region(n);
+  std::vector<double> inc_abs(n, 0.0), inc_dt(n, 0.0), sigma(n);
   for (std::size_t i = 0; i < n; ++i) {
-    double* s = &rows[i * kDepthWidth + 5];
-    const int r = bins.index(&x[3 * i]);
+    double* s = state + i * kStateWidth;
+    region[i] = bins.index(x + 3 * i);
     const double d = depth[i];
     if (s[S_LAST_SNAP] == static_cast<double>(k - 1) && k > 1) {
-      const double a = std::fabs(d - s[S_LAST_D]), dt = t - s[S_LAST_T];
-      s[S_SUM_ABS] += a;
-      s[S_SUM_DT] += dt;
+      inc_abs[i] = std::fabs(d - s[S_LAST_D]);
+      inc_dt[i] = t - s[S_LAST_T];
+      s[S_SUM_ABS] += inc_abs[i];
+      s[S_SUM_DT] += inc_dt[i];
       const int lr = static_cast<int>(s[S_LAST_REGION]);
-      if (lr >= 0 && lr < bins.count) {
-        rs.region[lr].total_abs += a;
-        rs.region[lr].total_dt += dt;
-      }
+      if (lr >= 0 && lr < nb) from[i] = lr;
     }
     s[S_SAMPLES] += 1.0;
     s[S_SUM_D] += d;
     s[S_SUM_D2] += d * d;
-    if (r >= 0) {
-      ++rs.region[r].samples;
-      rs.region[r].sum_d += d;
-      rs.region[r].sum_d2 += d * d;
-      ++rs.count_now[r];
-      rs.sigma_now[r] += state_sigma(s);
-    }
+    sigma[i] = state_sigma(s);
     s[S_LAST_T] = t;
     s[S_LAST_D] = d;
-    s[S_LAST_REGION] = r;
+    s[S_LAST_REGION] = region[i];
     s[S_LAST_SNAP] = static_cast<double>(k);
+  }
+  // per bin: sum |dD|, sum dt (groups 5 b, 5 b + 1: increments starting there), sum D, sum D^2,
+  // sum sigma_D (5 b + 2 .. 4: atoms there now), and the count of atoms there now
+  WindowSums ws(5 * static_cast<std::size_t>(nb));
+  std::vector<long long> count(nb, 0);
+  for (std::size_t i = 0; i < n; ++i)
+    if (region[i] >= 0) ++count[region[i]];
+  auto each = [&](auto&& f) {
+    for (std::size_t i = 0; i < n; ++i) {
+      if (from[i] >= 0) {
+        f(5 * from[i], inc_abs[i]);
+        f(5 * from[i] + 1, inc_dt[i]);
+      }
+      if (region[i] >= 0) {
+        f(5 * region[i] + 2, depth[i]);
+        f(5 * region[i] + 3, depth[i] * depth[i]);
+        f(5 * region[i] + 4, sigma[i]);
+      }
+    }
+  };
+  reduce_window_sums(
+      comm, ws, [&] { each([&](std::size_t g, double val) { ws.note(g, val); }); },
+      [&] { each([&](std::size_t g, double val) { ws.add(g, val); }); });
+  MPI_Allreduce(MPI_IN_PLACE, count.data(), nb, MPI_LONG_LONG, MPI_SUM, comm);
+  rs.region.resize(nb);
+  rs.count_now.assign(nb, 0);
+  rs.sigma_now.assign(nb, 0.0);
+  for (int b = 0; b < nb; ++b) {
+    auto& g = rs.region[b];
+    g.total_abs += ws.value(5 * b);
+    g.total_dt += ws.value(5 * b + 1);
+    g.samples += static_cast<long>(count[b]);
+    g.sum_d += ws.value(5 * b + 2);
+    g.sum_d2 += ws.value(5 * b + 3);
+    rs.count_now[b] = static_cast<long>(count[b]);
+    rs.sigma_now[b] = ws.value(5 * b + 4);
   }
 }
 

@@ -8,7 +8,8 @@ Parts (--part):
   depth     layered beds on a floor: D = 0 at the surface, 1 at the grate, linear in between (closed
             form), a jittered 3D bed and a 2D bed vs numpy, normalise no = depth in metres
   rate      prescribed motion (fix nve, no forces): Q' per particle and per bin = closed form to 1e-10
-  mpi       -np 1 and -np 2 (atoms migrating between the ranks) give identical outputs
+  mpi       -np 1, 2, 4, 8 (atoms migrating between the ranks) give identical outputs; no rank
+            holds the whole group
   restart   write_restart / read_restart continues the accumulation identically
   bad_input bad arguments end with an error naming keyword, value and the allowed values
 """
@@ -300,16 +301,16 @@ thermo 50
 """
 
 
-def fly_data(d):
-    """200 spheres on a lattice (ids in lattice order, so that they do not depend on the number of
+def fly_data(d, nx=10):
+    """10 nx spheres (200 by default) on a lattice (ids in lattice order, so that they do not depend on the number of
     ranks) with velocities of fixed seed, as a data file."""
     rng = np.random.default_rng(4711)
     pts = [(0.005 + 0.01 * i, 0.005 + 0.01 * j, 0.005 + 0.01 * k) for k in range(5) for j in range(4)
-           for i in range(10)]
+           for i in range(nx)]
     v = np.column_stack([0.2 + 0.25 * rng.uniform(-1, 1, len(pts)), 0.1 * rng.uniform(-1, 1, len(pts)),
                          0.025 * rng.uniform(-1, 1, len(pts))])
     lines = ["tdem mixing test bed", "", "%d atoms" % len(pts), "1 atom types", "",
-             "0 0.1 xlo xhi", "0 0.04 ylo yhi", "0 0.1 zlo zhi", "", "Atoms # sphere", ""]
+             "0 %.17g xlo xhi" % (0.01 * nx), "0 0.04 ylo yhi", "0 0.1 zlo zhi", "", "Atoms # sphere", ""]
     lines += ["%d 1 0.01 2500 %.17g %.17g %.17g" % (n + 1, *p) for n, p in enumerate(pts)]
     lines += ["", "Velocities", ""]
     lines += ["%d %.17g %.17g %.17g 0 0 0" % (n + 1, *v[n]) for n in range(len(pts))]
@@ -320,25 +321,63 @@ def fly_data(d):
 FLY_RUN = "run 300\nwrite_dump all custom dump.txt id x y z f_d[1] f_d[2] f_d[3] f_d[4] modify sort id format float %.17g\n"
 
 
+GRIDS = ((1, ""), (2, "processors 2 1 1"), (4, "processors 1 2 2"), (8, "processors 2 2 2"), (8, "processors 1 4 2"))
+
+
+def held(out):
+    """{(style, rank): (owned, halo, group)} of the last evaluation, from TDEM_MIXING_REPORT lines."""
+    h = {}
+    for line in out.splitlines():
+        w = line.split()
+        if line.startswith("tdem mixing report:") and len(w) >= 13:
+            h[(w[3], int(w[5]))] = (int(w[9]), int(w[11]), int(w[13]))
+    return h
+
+
 def part_mpi():
+    """-np 1, 2, 4, 8 (oversubscribed; splits along the up axis z, and 1 x 4 x 2 where a sub-domain
+    is narrower than r_v): every output bitwise equal to -np 1; no rank holds the whole group."""
+    os.environ["TDEM_MIXING_REPORT"] = "1"
     res = []
-    for np_, proc in ((1, ""), (2, "processors 2 1 1")):
+    for np_, proc in GRIDS:
         d = lc.workdir("mixmpi")
         fly_data(d)
         _, out = run(FLY.format(dim=3, bnd="p p f", proc=proc, box="0 0.1 0 0.04 0 0.1") + FLY_RUN, d, np_=np_)
         rows = np.array([[float(v) for v in r.split()] for r in lc.thermo_blocks(out)[1:]])
         cols, data = lc.read_dump(os.path.join(d, "dump.txt"))
         res.append((rows, data, out))
-    chk.check("2 by 1 by 1 MPI processor grid" in res[1][2], "-np 2 runs on a 2 x 1 x 1 grid")
-    a, b = res[0][0], res[1][0]
-    chk.check(a.shape == b.shape and np.all(a[1:, 1:6] > 0) if a.shape == b.shape else False,
-              "thermo rows present and non-trivial (%s)" % (a.shape,))
-    dmax = np.abs(a - b).max() if a.shape == b.shape else np.inf
-    chk.check(dmax == 0.0, "-np 1 vs -np 2: P', p_k, Q', D columns of the thermo output identical (max diff %.3g)"
-              % dmax)
-    da, db = res[0][1], res[1][1]
-    dd = np.abs(da - db).max() if da.shape == db.shape else np.inf
-    chk.check(dd == 0.0, "-np 1 vs -np 2: per-atom D, Dbar, sigma_D, Q' identical (max diff %.3g)" % dd)
+    a, da = res[0][0], res[0][1]
+    chk.check(a.shape[0] > 3 and np.all(a[1:, 1:6] > 0), "thermo rows present and non-trivial (%s)" % (a.shape,))
+    for (np_, proc), (b, db, out) in zip(GRIDS[1:], res[1:]):
+        grid = " by ".join(proc.split()[1:])
+        chk.check(grid + " MPI processor grid" in out, "-np %d runs on a %s grid" % (np_, grid))
+        dmax = np.abs(a - b).max() if a.shape == b.shape else np.inf
+        chk.check(dmax == 0.0, "-np 1 vs -np %d (%s): P', p_k, Q', D columns of the thermo output identical "
+                  "(max diff %.3g)" % (np_, grid, dmax))
+        dd = np.abs(da - db).max() if da.shape == db.shape else np.inf
+        chk.check(dd == 0.0, "-np 1 vs -np %d (%s): per-atom D, Dbar, sigma_D, Q' identical (max diff %.3g)"
+                  % (np_, grid, dd))
+    # a bed 4 times as long on 4 ranks along x: each rank holds its own atoms and a halo, not the group
+    # (the 200-atom scene above is too small for that: its halo and periodic images cover it)
+    out4 = {}
+    for np_, proc in ((1, ""), (4, "processors 4 1 1")):
+        d = lc.workdir("mixlong")
+        fly_data(d, nx=40)
+        scene = FLY.format(dim=3, bnd="p p f", proc=proc, box="0 0.4 0 0.04 0 0.1").replace(
+            "bins x 0 0.1 4", "bins x 0 0.4 8")
+        _, out4[np_] = run(scene + FLY_RUN.replace("run 300", "run 100"), d, np_=np_)
+        out4[np_] = (np.array([[float(v) for v in r.split()] for r in lc.thermo_blocks(out4[np_])[1:]]),
+                     lc.read_dump(os.path.join(d, "dump.txt"))[1], out4[np_])
+    (a1, d1, _), (a4, d4, o4) = out4[1], out4[4]
+    same = a1.shape == a4.shape and np.abs(a1 - a4).max() == 0.0 and np.abs(d1 - d4).max() == 0.0
+    chk.check(same, "800-atom bed, -np 1 vs -np 4 (4 by 1 by 1): thermo and per-atom output identical")
+    h = held(o4)
+    for style in ("velocity", "depth"):
+        per = [v for k, v in h.items() if k[0] == style]
+        most = max(o + m for o, m, g in per) if per else -1
+        chk.check(len(per) == 4 and all(g == 800 for _, _, g in per) and 0 < most < 400,
+                  "800-atom bed on 4 ranks, %s: a rank holds at most %d rows (< half the group; owned, halo "
+                  "incl. periodic images per rank: %s)" % (style, most, sorted((o, m) for o, m, g in per)))
 
 
 def part_restart():

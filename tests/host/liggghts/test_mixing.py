@@ -237,29 +237,65 @@ thermo 50
 DUMP = dump_cmd(["id", "x", "y", "z", "f_d[1]", "f_d[2]", "f_d[3]", "f_d[4]"])
 
 
-def fly(d):
+def fly(d, nx=10):
     rng = np.random.default_rng(4711)
-    x = lattice(10, 4, 5, jitter=0.002, seed=31)
+    x = lattice(nx, 4, 5, jitter=0.002, seed=31)
     v = np.column_stack([0.2 + 0.25 * rng.uniform(-1, 1, len(x)), 0.1 * rng.uniform(-1, 1, len(x)),
                          0.025 * rng.uniform(-1, 1, len(x))])
-    write_data(d, x, np.full(len(x), 0.01), v, box=((0, 0.1), (0, 0.04), (-0.01, 0.1)))
+    write_data(d, x, np.full(len(x), 0.01), v, box=((0, 0.01 * nx), (0, 0.04), (-0.01, 0.1)))
+
+
+GRIDS = ((1, ""), (2, "processors 2 1 1"), (4, "processors 1 2 2"), (8, "processors 2 2 2"), (8, "processors 1 4 2"))
+
+
+def held(out):
+    """{(style, rank): (owned, halo, group)} of the last evaluation, from TDEM_MIXING_REPORT lines."""
+    h = {}
+    for line in out.splitlines():
+        w = line.split()
+        if line.startswith("tdem mixing report:") and len(w) >= 13:
+            h[(w[3], int(w[5]))] = (int(w[9]), int(w[11]), int(w[13]))
+    return h
 
 
 def part_parallel():
+    """-np 1, 2, 4, 8 (oversubscribed; splits along the up axis z, and 1 x 4 x 2 where a sub-domain is
+    narrower than r_v): every output bitwise equal to -np 1; on a longer bed no rank holds the group."""
+    os.environ["TDEM_MIXING_REPORT"] = "1"
     res = []
-    for np_, proc in ((1, ""), (2, "processors 2 1 1")):
-        d = wd("np%d" % np_)
+    for np_, proc in GRIDS:
+        d = wd("np%d_%s" % (np_, proc.replace(" ", "")))
         fly(d)
         r = run(d, HEAD.format(bnd="p p f", proc=proc) + SETUP + "run 300\n" + DUMP, np_=np_)
         res.append((np.array(thermo_rows(d)), last_dump(d), r.stdout))
-    chk.check("2 by 1 by 1" in res[1][2], "-np 2 runs on a 2 x 1 x 1 grid")
-    a, b = res[0][0], res[1][0]
-    chk.check(a.shape == b.shape and a.shape[0] == 7 and np.all(a[1:, 1:6] > 0), "thermo rows non-trivial")
-    chk.check(a.shape == b.shape and np.abs(a - b).max() == 0.0,
-              "-np 1 vs -np 2: P', p_k, Q', bin table identical (max diff %.3g)"
-              % (np.abs(a - b).max() if a.shape == b.shape else np.inf))
-    chk.check(res[0][1].shape == res[1][1].shape and np.abs(res[0][1] - res[1][1]).max() == 0.0,
-              "-np 1 vs -np 2: per-atom D, Dbar, sigma_D, Q' identical")
+    a, da = res[0][0], res[0][1]
+    chk.check(a.shape[0] == 7 and np.all(a[1:, 1:6] > 0), "thermo rows non-trivial")
+    for (np_, proc), (b, db, out) in zip(GRIDS[1:], res[1:]):
+        grid = " by ".join(proc.split()[1:])
+        chk.check(grid in out, "-np %d runs on a %s grid" % (np_, grid))
+        chk.check(a.shape == b.shape and np.abs(a - b).max() == 0.0,
+                  "-np 1 vs -np %d (%s): P', p_k, Q', bin table identical (max diff %.3g)"
+                  % (np_, grid, np.abs(a - b).max() if a.shape == b.shape else np.inf))
+        chk.check(da.shape == db.shape and np.abs(da - db).max() == 0.0,
+                  "-np 1 vs -np %d (%s): per-atom D, Dbar, sigma_D, Q' identical" % (np_, grid))
+    # a bed 4 times as long on 4 ranks along x: each rank holds its own atoms and a halo, not the group
+    long_setup = SETUP.replace("bins x 0 0.1 4", "bins x 0 0.4 8")
+    out = {}
+    for np_, proc in ((1, ""), (4, "processors 4 1 1")):
+        d = wd("long%d" % np_)
+        fly(d, nx=40)
+        r = run(d, HEAD.format(bnd="p p f", proc=proc) + long_setup + "run 100\n" + DUMP, np_=np_)
+        out[np_] = (np.array(thermo_rows(d)), last_dump(d), r.stdout)
+    (a1, d1, _), (a4, d4, o4) = out[1], out[4]
+    same = a1.shape == a4.shape and np.abs(a1 - a4).max() == 0.0 and np.abs(d1 - d4).max() == 0.0
+    chk.check(same, "800-atom bed, -np 1 vs -np 4 (4 by 1 by 1): thermo and per-atom output identical")
+    h = held(o4)
+    for style in ("velocity", "depth"):
+        per = [v for k, v in h.items() if k[0] == style]
+        most = max(o + m for o, m, g in per) if per else -1
+        chk.check(len(per) == 4 and all(g == 800 for _, _, g in per) and 0 < most < 400,
+                  "800-atom bed on 4 ranks, %s: a rank holds at most %d rows (< half the group; owned, halo "
+                  "incl. periodic images per rank: %s)" % (style, most, sorted((o, m) for o, m, g in per)))
     # restart
     d = wd("rst")
     fly(d)

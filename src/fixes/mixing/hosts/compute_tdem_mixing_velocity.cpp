@@ -83,7 +83,6 @@ void ComputeTDEMMixingVelocity::evaluate()
     for (int k = 0; k < 3; k++) rows.push_back(atom->v[i][k]);
     rows.push_back((mask[i] & excludebit) ? 0.0 : 1.0);
   }
-  const std::vector<double> all = mh::allgather_sorted(world, rows, mh::kVelocityWidth);
   tdem::grate::mixing::Periodic per;
   for (int k = 0; k < 3; k++) {
     per.on[k] = cfg.periodic[k];
@@ -92,7 +91,8 @@ void ComputeTDEMMixingVelocity::evaluate()
   }
   std::vector<double> t;
   try {
-    t = mh::velocity_table(all, cfg, per);
+    t = mh::velocity_table(world, rows, cfg, per, held);
+    mh::report(world, "velocity", held);
   } catch (std::exception &e) {
     tdem_host::all(error, FLERR, std::string("compute ") + id + " tdem/mixing/velocity: " + e.what());
   }

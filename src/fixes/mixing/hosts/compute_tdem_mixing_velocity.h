@@ -32,6 +32,7 @@ class ComputeTDEMMixingVelocity : public Compute {
   tdem::grate::mixing::host::VelocityConfig cfg;
   int excludebit;
   double **table;
+  tdem::grate::mixing::host::HaloCount held;  // atoms of the last evaluation on this rank
   void evaluate();
 };
 

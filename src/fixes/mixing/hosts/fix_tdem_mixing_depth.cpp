@@ -137,16 +137,16 @@ void FixTDEMMixingDepth::take_snapshot()
   if (update->ntimestep == last_step) return;
   const int nlocal = atom->nlocal;
   const int *mask = atom->mask;
-  std::vector<double> rows;
-  rows.reserve(static_cast<size_t>(nlocal) * mh::kDepthWidth);
+  std::vector<double> id, x, rad, state;
+  std::vector<int> index;
   for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
-    rows.push_back(static_cast<double>(atom->tag[i]));
-    for (int k = 0; k < 3; k++) rows.push_back(atom->x[i][k]);
-    rows.push_back(atom->radius[i]);
-    for (int k = 0; k < mh::kStateWidth; k++) rows.push_back(rows_[i][mh::kPeratomCols + k]);
+    index.push_back(i);
+    id.push_back(static_cast<double>(atom->tag[i]));
+    for (int k = 0; k < 3; k++) x.push_back(atom->x[i][k]);
+    rad.push_back(atom->radius[i]);
+    for (int k = 0; k < mh::kStateWidth; k++) state.push_back(rows_[i][mh::kPeratomCols + k]);
   }
-  std::vector<double> all = mh::allgather_sorted(world, rows, mh::kDepthWidth);
 
   mx::DepthOptions o;
   o.transport_axis = cfg.bins.axis;
@@ -173,20 +173,20 @@ void FixTDEMMixingDepth::take_snapshot()
   }
   std::vector<double> depth;
   try {
-    mh::depth_snapshot(all, o, cfg.bins, t, snapshot + 1, rs, depth);
+    mh::depth_snapshot(world, index.size(), id.data(), x.data(), rad.data(), state.data(), o, cfg.bins, t,
+                       snapshot + 1, rs, depth, held);
   } catch (std::exception &e) {
     tdem_host::all(error, FLERR, ctx() + ": " + e.what());
   }
+  mh::report(world, "depth", held);
   ++snapshot;
   last_step = update->ntimestep;
 
-  for (int i = 0; i < nlocal; i++) {
-    if (!(mask[i] & groupbit)) continue;
-    const long r = mh::find_row(all, mh::kDepthWidth, static_cast<double>(atom->tag[i]));
-    if (r < 0) tdem_host::one(error, FLERR, ctx() + ": internal error, atom missing from the gather");
-    const double *s = &all[r * mh::kDepthWidth + 5];
+  for (std::size_t q = 0; q < index.size(); q++) {
+    const int i = index[q];
+    const double *s = &state[q * mh::kStateWidth];
     for (int k = 0; k < mh::kStateWidth; k++) rows_[i][mh::kPeratomCols + k] = s[k];
-    rows_[i][0] = depth[r];
+    rows_[i][0] = depth[q];
     rows_[i][1] = mh::state_mean(s);
     rows_[i][2] = mh::state_sigma(s);
     rows_[i][3] = mh::state_q(s);

@@ -45,6 +45,7 @@ class FixTDEMMixingDepth : public tdem::host::PerAtomRows<Fix> {
   // rows_ (tdem::host::PerAtomRows): per atom the output (4) + the state (9)
   std::vector<double> table;
   tdem::grate::mixing::host::RegionSums rs;
+  tdem::grate::mixing::host::HaloCount held;  // atoms of the last snapshot on this rank
   long snapshot;
   bigint last_step;
   Fix *grate_fix;
