@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <stdexcept>
@@ -52,10 +53,12 @@ struct Periodic {
 
 // Uniform cell list over the axes with use[k] = true (other axes: one cell), on the bounding box of
 // the points. The cells are at least `cell` wide, so all points within `cell` (per axis) of a query
-// point lie in the 3^d neighbouring cells. Periodicity is handled by the caller with images.
+// point lie in the 3^d neighbouring cells. The positions are kept in cell order (contiguous scans);
+// with `height` the points of a cell are ordered by height[j], highest first. Periodicity is handled
+// by the caller with images.
 class CellList {
  public:
-  CellList(std::size_t n, const double* x, double cell, const bool use[3]) : x_(x) {
+  CellList(std::size_t n, const double* x, double cell, const bool use[3], const double* height = nullptr) {
     if (!(cell > 0.0) || !std::isfinite(cell)) bad_value("mixing cell list", "radius", cell, "(0, inf)");
     long total = 1;
     for (int k = 0; k < 3; ++k) {
@@ -93,9 +96,16 @@ class CellList {
     items_.resize(n);
     std::vector<long> fill(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < n; ++i) items_[fill[cell_of[i]]++] = i;
+    if (height)
+      for (long c = 0; c < total; ++c)
+        std::sort(items_.begin() + start_[c], items_.begin() + start_[c + 1],
+                  [&](std::size_t a, std::size_t b) { return height[a] > height[b] || (height[a] == height[b] && a < b); });
+    xs_.resize(3 * n);
+    for (std::size_t q = 0; q < n; ++q) std::copy_n(x + 3 * items_[q], 3, &xs_[3 * q]);
   }
 
-  // f(j) for every candidate j near the point p
+  // f(j, xj) for the candidates j near the point p (xj: its position); in each cell, in cell order,
+  // until f returns false (the rest of that cell is skipped)
   template <class F>
   void for_each_candidate(const double* p, F&& f) const {
     long from[3], to[3];
@@ -108,7 +118,8 @@ class CellList {
       for (long b = from[1]; b <= to[1]; ++b)
         for (long c = from[2]; c <= to[2]; ++c) {
           const long cell = (a * nc_[1] + b) * nc_[2] + c;
-          for (long q = start_[cell]; q < start_[cell + 1]; ++q) f(items_[q]);
+          for (long q = start_[cell]; q < start_[cell + 1]; ++q)
+            if (!f(items_[q], &xs_[3 * q])) break;
         }
   }
 
@@ -122,12 +133,12 @@ class CellList {
     return (axis_cell(p[0], 0) * nc_[1] + axis_cell(p[1], 1)) * nc_[2] + axis_cell(p[2], 2);
   }
 
-  const double* x_;
   bool use_[3] = {true, true, true};
   long nc_[3] = {1, 1, 1};
   double lo_[3] = {0, 0, 0}, len_[3] = {0, 0, 0}, size_[3] = {1, 1, 1};
   std::vector<long> start_;
   std::vector<std::size_t> items_;
+  std::vector<double> xs_;
 };
 
 // ---------------------------------------------------------------- periodic images, point clouds
@@ -143,26 +154,29 @@ inline void image_position(const double* x, int code, const Periodic& per, doubl
   }
 }
 
-// f(code) for every image of p (shifts along the periodic axes only, the point itself included)
-// whose distance to the box [lo, hi] over the axes with use[k] is <= r: Euclidean (euclid) or per axis.
+// Is the image `code` of p (shifts along periodic axes only) within r of the box [lo, hi] over the
+// axes with use[k]: Euclidean distance (euclid) or per axis?
+inline bool image_near(const double* p, int code, const Periodic& per, const double* lo, const double* hi, double r,
+                       const bool use[3], bool euclid) {
+  double sum = 0.0;
+  for (int k = 0; k < 3; ++k, code /= 3) {
+    const int s = code % 3 - 1;
+    if (s != 0 && !per.on[k]) return false;
+    if (!use[k]) continue;
+    const double q = s ? p[k] + s * per.length(k) : p[k];
+    const double gap = q < lo[k] ? lo[k] - q : (q > hi[k] ? q - hi[k] : 0.0);
+    if (euclid) sum += gap * gap;
+    else if (gap > r) return false;
+  }
+  return !euclid || sum <= r * r;
+}
+
+// f(code) for every image of p (the point itself included) within r of the box [lo, hi]
 template <class F>
 void for_each_image_near(const double* p, const Periodic& per, const double* lo, const double* hi, double r,
                          const bool use[3], bool euclid, F&& f) {
-  for (int code = 0; code < 27; ++code) {
-    double q[3], sum = 0.0;
-    bool near = true;
-    int c = code;
-    for (int k = 0; k < 3 && near; ++k, c /= 3) {
-      const int s = c % 3 - 1;
-      if (s != 0 && !per.on[k]) near = false;
-      q[k] = s ? p[k] + s * per.length(k) : p[k];
-      if (!use[k]) continue;
-      const double gap = q[k] < lo[k] ? lo[k] - q[k] : (q[k] > hi[k] ? q[k] - hi[k] : 0.0);
-      if (euclid) sum += gap * gap;
-      else if (gap > r) near = false;
-    }
-    if (near && (!euclid || sum <= r * r)) f(code);
-  }
+  for (int code = 0; code < 27; ++code)
+    if (image_near(p, code, per, lo, hi, r, use, euclid)) f(code);
 }
 
 inline void bounding_box(std::size_t n, const double* x, double* lo, double* hi) {
@@ -266,40 +280,63 @@ struct LocalVelocity {
   std::vector<int> neighbours;  // |N_i| (>= 1)
 };
 
-// vbar, vtil of the first c.n_eval points of the cloud; v holds the velocities of all c.n points.
-// A particle present as several copies (images) counts once: the copy that sits at its minimum image.
-// The neighbour velocities are summed in the order of the particle ids, so the result depends only
-// on the particles, not on how they are spread over ranks.
-inline LocalVelocity local_velocity(const Cloud& c, const double* v, double r_v, const Periodic& per) {
+// The exponent e with |v| < 2^e for all the velocities given (0 when all are 0): the scale of the
+// fixed-point neighbour sums of local_velocity (the same on every rank: take the maximum over ranks).
+inline int velocity_exponent(std::size_t n3, const double* v) {
+  double m = 0.0;
+  for (std::size_t q = 0; q < n3; ++q) m = std::max(m, std::fabs(v[q]));
+  int e = 0;
+  if (m > 0.0 && std::isfinite(m)) std::frexp(m, &e);
+  return e;
+}
+
+// vbar, vtil of the first c.n_eval points of the cloud; v holds the velocities of all c.n points,
+// all below 2^v_exp in magnitude (velocity_exponent). A particle present as several copies (images)
+// counts once: the copy that sits at its minimum image. The neighbour velocities are summed as
+// integers (v 2^(62 - v_exp) rounded, 128-bit sums): exact, so the mean depends only on the
+// neighbours, not on their order or on how the particles are spread over ranks.
+inline LocalVelocity local_velocity(const Cloud& c, const double* v, double r_v, const Periodic& per, int v_exp) {
   if (!(r_v > 0.0) || !std::isfinite(r_v)) bad_value("mixing", "radius (evaluation radius r_v)", r_v, "(0, inf)");
   check_periodic(per, r_v, "r_v");
+  for (std::size_t q = 0; q < 3 * c.n; ++q)
+    if (!std::isfinite(v[q])) bad_value("mixing", "velocity", v[q], "a finite number");
   const std::vector<double> b = cloud_positions(c, per);
+  std::vector<std::int64_t> vq(3 * c.n);
+  for (std::size_t q = 0; q < 3 * c.n; ++q) vq[q] = std::llrint(std::ldexp(v[q], 62 - v_exp));
   const bool use[3] = {true, true, true};
   CellList cl(c.n, b.data(), r_v * (1.0 + 1e-9), use);  // margin for the round-off of image positions
+  // the lists' own order; candidates come as positions in it
   LocalVelocity out;
   out.mean.assign(3 * c.n_eval, 0.0);
   out.fluct.assign(3 * c.n_eval, 0.0);
   out.neighbours.assign(c.n_eval, 0);
   const double r2 = r_v * r_v;
-  std::vector<std::pair<double, std::size_t>> nb;
+  const double pre2 = r2 * (1.0 + 1e-6);  // the position of the right copy differs from x_i + d by round-off
+  const bool any_periodic = per.on[0] || per.on[1] || per.on[2];
   for (std::size_t i = 0; i < c.n_eval; ++i) {
     const double* p = c.x + 3 * i;
-    nb.clear();
-    cl.for_each_candidate(p, [&](std::size_t j) {
+    __int128 s0 = 0, s1 = 0, s2 = 0;
+    int cnt = 0;
+    cl.for_each_candidate(p, [&](std::size_t j, const double* bj) {
+      const double e0 = bj[0] - p[0], e1 = bj[1] - p[1], e2 = bj[2] - p[2];
+      if (e0 * e0 + e1 * e1 + e2 * e2 > pre2) return true;  // far where it sits: no neighbour, or another copy
       double d[3];
       min_image(c.x + 3 * j, p, per, d);
-      for (int k = 0; k < 3; ++k)
-        if (per.on[k] && std::fabs(b[3 * j + k] - p[k] - d[k]) > 0.5 * per.length(k)) return;  // another copy
-      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= r2) nb.emplace_back(c.id ? c.id[j] : double(j), j);
+      if (any_periodic)
+        for (int k = 0; k < 3; ++k)
+          if (per.on[k] && std::fabs(bj[k] - p[k] - d[k]) > 0.5 * per.length(k)) return true;  // another copy
+      if (d[0] * d[0] + d[1] * d[1] + d[2] * d[2] <= r2) {
+        s0 += vq[3 * j];
+        s1 += vq[3 * j + 1];
+        s2 += vq[3 * j + 2];
+        ++cnt;
+      }
+      return true;
     });
-    std::sort(nb.begin(), nb.end());
-    double s[3] = {0.0, 0.0, 0.0};
-    for (const auto& e : nb)
-      for (int k = 0; k < 3; ++k) s[k] += v[3 * e.second + k];
-    const int cnt = static_cast<int>(nb.size());
     out.neighbours[i] = cnt;
+    const __int128 s[3] = {s0, s1, s2};
     for (int k = 0; k < 3; ++k) {
-      out.mean[3 * i + k] = s[k] / cnt;
+      out.mean[3 * i + k] = std::ldexp(static_cast<double>(s[k]), v_exp - 62) / cnt;
       out.fluct[3 * i + k] = v[3 * i + k] - out.mean[3 * i + k];
     }
   }
@@ -313,7 +350,7 @@ inline LocalVelocity local_velocity(std::size_t n, const double* x, const double
   const SelfCloud s = self_cloud(n, x, per, r_v * (1.0 + 1e-9), use, true);
   std::vector<double> vs(3 * s.source.size());
   for (std::size_t q = 0; q < s.source.size(); ++q) std::copy_n(v + 3 * s.source[q], 3, &vs[3 * q]);
-  return local_velocity(s.cloud(), vs.data(), r_v, per);
+  return local_velocity(s.cloud(), vs.data(), r_v, per, velocity_exponent(3 * n, v));
 }
 
 // Running sums of the fluctuations of one region; merge() adds snapshots or processors.
@@ -416,7 +453,9 @@ inline Depths particle_depths(const Cloud& c, const double* radius, const DepthO
   const Periodic per = depth_periodic(o);
   const double h = 0.5 * o.column_width;
   const std::vector<double> b = cloud_positions(c, per);
-  CellList cl(c.n, b.data(), h * (1.0 + 1e-9), use);
+  std::vector<double> height(c.n);
+  for (std::size_t q = 0; q < c.n; ++q) height[q] = c.x[3 * q + o.up_axis];
+  CellList cl(c.n, b.data(), h * (1.0 + 1e-9), use, height.data());  // each cell from its highest point down
   Depths out;
   out.depth.resize(c.n_eval);
   out.surface.resize(c.n_eval);
@@ -425,10 +464,15 @@ inline Depths particle_depths(const Cloud& c, const double* radius, const DepthO
   for (std::size_t i = 0; i < c.n_eval; ++i) {
     const double* p = c.x + 3 * i;
     double s = p[u];
-    cl.for_each_candidate(p, [&](std::size_t j) {
+    cl.for_each_candidate(p, [&](std::size_t j, const double*) {
+      if (!(height[j] > s)) return false;  // nothing higher below in this cell
       double d[3];
       min_image(c.x + 3 * j, p, per, d);
-      if (std::fabs(d[t]) <= h && (l < 0 || std::fabs(d[l]) <= h)) s = std::max(s, c.x[3 * j + u]);
+      if (std::fabs(d[t]) <= h && (l < 0 || std::fabs(d[l]) <= h)) {
+        s = height[j];  // the highest of this cell in the column
+        return false;
+      }
+      return true;
     });
     const double bot = o.grate_height(p[t], l >= 0 ? p[l] : 0.0) + radius[i];
     out.surface[i] = s;

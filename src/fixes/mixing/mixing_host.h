@@ -264,7 +264,15 @@ inline std::vector<double> velocity_table(MPI_Comm comm, const std::vector<doubl
   }
   hc.owned = static_cast<long>(n);
   hc.halo = static_cast<long>(m - n);
-  const LocalVelocity lv = local_velocity(Cloud{m, n_eval, x.data(), image.data(), id.data()}, v.data(), c.radius, per);
+  // the scale of the fixed-point neighbour sums: the largest velocity of all ranks; a non-finite one
+  // stops every rank with the same message
+  int scale[2] = {velocity_exponent(3 * n, v.data()), 0};
+  for (std::size_t q = 0; q < 3 * n; ++q)
+    if (!std::isfinite(v[q])) scale[1] = 1;
+  MPI_Allreduce(MPI_IN_PLACE, scale, 2, MPI_INT, MPI_MAX, comm);
+  if (scale[1]) throw std::invalid_argument("an atom of the group has a velocity that is not a finite number");
+  const LocalVelocity lv =
+      local_velocity(Cloud{m, n_eval, x.data(), image.data(), id.data()}, v.data(), c.radius, per, scale[0]);
   // region sums: per bin the sums of vtil_k and vtil_k^2 (groups 6 b + k, 6 b + 3 + k) and the count
   const int nb = c.bins.count;
   WindowSums ws(6 * static_cast<std::size_t>(nb));

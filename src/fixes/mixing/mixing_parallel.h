@@ -24,6 +24,7 @@
 #include <cstdlib>
 #include <algorithm>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "contact/exact_sum.h"
@@ -87,30 +88,28 @@ Halo exchange_halo(MPI_Comm comm, const std::vector<double>& rows, int width, co
     for (int k = 0; k < 3; ++k) x[3 * j + k] = rows[j * width + 1 + k];
   double lo[3], hi[3];
   bounding_box(n, x.data(), lo, hi);
-  std::vector<int> reach;
+  // (rank, image) pairs this rank's rows can reach at all: its box against theirs
+  std::vector<std::pair<int, int>> reach;
   for (int q = 0; q < nprocs && n > 0; ++q) {
     if (!boxes[q].any) continue;
-    double grown_lo[3], grown_hi[3], mid[3], half[3];
-    for (int k = 0; k < 3; ++k) {  // q's box grown by this rank's extent: does any image of it touch?
+    double grown_lo[3], grown_hi[3], mid[3];
+    for (int k = 0; k < 3; ++k) {  // q's box grown by half this rank's extent, against its centre
       mid[k] = 0.5 * (lo[k] + hi[k]);
-      half[k] = 0.5 * (hi[k] - lo[k]);
-      grown_lo[k] = boxes[q].lo[k] - half[k];
-      grown_hi[k] = boxes[q].hi[k] + half[k];
+      grown_lo[k] = boxes[q].lo[k] - 0.5 * (hi[k] - lo[k]);
+      grown_hi[k] = boxes[q].hi[k] + 0.5 * (hi[k] - lo[k]);
     }
-    bool near = false;
-    for_each_image_near(mid, per, grown_lo, grown_hi, r, use, false, [&](int code) {
-      if (q != me || code != kNoShift) near = true;
+    for_each_image_near(mid, per, grown_lo, grown_hi, r * (1.0 + 1e-9), use, false, [&](int code) {
+      if (q != me || code != kNoShift) reach.emplace_back(q, code);
     });
-    if (near) reach.push_back(q);
   }
   std::vector<std::vector<double>> out(nprocs);
   for (std::size_t j = 0; j < n; ++j)
-    for (int q : reach)
-      for_each_image_near(&x[3 * j], per, boxes[q].lo, boxes[q].hi, r, use, euclid, [&](int code) {
-        if ((q == me && code == kNoShift) || !send(j, q)) return;
-        out[q].insert(out[q].end(), rows.begin() + j * width, rows.begin() + (j + 1) * width);
-        out[q].push_back(static_cast<double>(code));
-      });
+    for (const auto& qc : reach) {
+      const int q = qc.first, code = qc.second;
+      if (!image_near(&x[3 * j], code, per, boxes[q].lo, boxes[q].hi, r, use, euclid) || !send(j, q)) continue;
+      out[q].insert(out[q].end(), rows.begin() + j * width, rows.begin() + (j + 1) * width);
+      out[q].push_back(static_cast<double>(code));
+    }
   std::vector<int> scount(nprocs), rcount(nprocs), sdisp(nprocs, 0), rdisp(nprocs, 0);
   for (int q = 0; q < nprocs; ++q) scount[q] = static_cast<int>(out[q].size());
   MPI_Alltoall(scount.data(), 1, MPI_INT, rcount.data(), 1, MPI_INT, comm);
