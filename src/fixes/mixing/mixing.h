@@ -104,8 +104,8 @@ class CellList {
     for (std::size_t q = 0; q < n; ++q) std::copy_n(x + 3 * items_[q], 3, &xs_[3 * q]);
   }
 
-  // f(j, xj) for the candidates j near the point p (xj: its position); in each cell, in cell order,
-  // until f returns false (the rest of that cell is skipped)
+  // f(q, xq) for the candidates near the point p: q = slot in cell order (point items()[q]), xq its
+  // position; in each cell, in cell order, until f returns false (the rest of that cell is skipped)
   template <class F>
   void for_each_candidate(const double* p, F&& f) const {
     long from[3], to[3];
@@ -119,9 +119,12 @@ class CellList {
         for (long c = from[2]; c <= to[2]; ++c) {
           const long cell = (a * nc_[1] + b) * nc_[2] + c;
           for (long q = start_[cell]; q < start_[cell + 1]; ++q)
-            if (!f(items_[q], &xs_[3 * q])) break;
+            if (!f(static_cast<std::size_t>(q), &xs_[3 * q])) break;
         }
   }
+
+ // the point in each slot
+  const std::vector<std::size_t>& items() const { return items_; }
 
  private:
   long axis_cell(double v, int k) const {
@@ -301,11 +304,18 @@ inline LocalVelocity local_velocity(const Cloud& c, const double* v, double r_v,
   for (std::size_t q = 0; q < 3 * c.n; ++q)
     if (!std::isfinite(v[q])) bad_value("mixing", "velocity", v[q], "a finite number");
   const std::vector<double> b = cloud_positions(c, per);
-  std::vector<std::int64_t> vq(3 * c.n);
-  for (std::size_t q = 0; q < 3 * c.n; ++q) vq[q] = std::llrint(std::ldexp(v[q], 62 - v_exp));
   const bool use[3] = {true, true, true};
   CellList cl(c.n, b.data(), r_v * (1.0 + 1e-9), use);  // margin for the round-off of image positions
-  // the lists' own order; candidates come as positions in it
+  // positions as the particles have them and fixed-point velocities, in the list's (cell) order
+  std::vector<double> xs(3 * c.n);
+  std::vector<std::int64_t> vq(3 * c.n);
+  for (std::size_t q = 0; q < c.n; ++q) {
+    const std::size_t j = cl.items()[q];
+    for (int k = 0; k < 3; ++k) {
+      xs[3 * q + k] = c.x[3 * j + k];
+      vq[3 * q + k] = std::llrint(std::ldexp(v[3 * j + k], 62 - v_exp));
+    }
+  }
   LocalVelocity out;
   out.mean.assign(3 * c.n_eval, 0.0);
   out.fluct.assign(3 * c.n_eval, 0.0);
@@ -321,7 +331,7 @@ inline LocalVelocity local_velocity(const Cloud& c, const double* v, double r_v,
       const double e0 = bj[0] - p[0], e1 = bj[1] - p[1], e2 = bj[2] - p[2];
       if (e0 * e0 + e1 * e1 + e2 * e2 > pre2) return true;  // far where it sits: no neighbour, or another copy
       double d[3];
-      min_image(c.x + 3 * j, p, per, d);
+      min_image(&xs[3 * j], p, per, d);
       if (any_periodic)
         for (int k = 0; k < 3; ++k)
           if (per.on[k] && std::fabs(bj[k] - p[k] - d[k]) > 0.5 * per.length(k)) return true;  // another copy
@@ -453,9 +463,14 @@ inline Depths particle_depths(const Cloud& c, const double* radius, const DepthO
   const Periodic per = depth_periodic(o);
   const double h = 0.5 * o.column_width;
   const std::vector<double> b = cloud_positions(c, per);
-  std::vector<double> height(c.n);
-  for (std::size_t q = 0; q < c.n; ++q) height[q] = c.x[3 * q + o.up_axis];
-  CellList cl(c.n, b.data(), h * (1.0 + 1e-9), use, height.data());  // each cell from its highest point down
+  std::vector<double> up(c.n);
+  for (std::size_t q = 0; q < c.n; ++q) up[q] = c.x[3 * q + o.up_axis];
+  CellList cl(c.n, b.data(), h * (1.0 + 1e-9), use, up.data());  // each cell from its highest point down
+  std::vector<double> xs(3 * c.n), height(c.n);  // in the list's order
+  for (std::size_t q = 0; q < c.n; ++q) {
+    std::copy_n(c.x + 3 * cl.items()[q], 3, &xs[3 * q]);
+    height[q] = up[cl.items()[q]];
+  }
   Depths out;
   out.depth.resize(c.n_eval);
   out.surface.resize(c.n_eval);
@@ -467,7 +482,7 @@ inline Depths particle_depths(const Cloud& c, const double* radius, const DepthO
     cl.for_each_candidate(p, [&](std::size_t j, const double*) {
       if (!(height[j] > s)) return false;  // nothing higher below in this cell
       double d[3];
-      min_image(c.x + 3 * j, p, per, d);
+      min_image(&xs[3 * j], p, per, d);
       if (std::fabs(d[t]) <= h && (l < 0 || std::fabs(d[l]) <= h)) {
         s = height[j];  // the highest of this cell in the column
         return false;
