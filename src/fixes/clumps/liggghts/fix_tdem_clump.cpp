@@ -63,7 +63,8 @@ FixTDEMClump::FixTDEMClump(LAMMPS* lmp, int narg, char** arg)
       have_force_(false),
       need_set_(false),
       correction_(cl::Correction::none),
-      pair_gran_(nullptr) {
+      link_(lmp, sides_) {
+  sides_.bodies = &bodies_;
   where_ = std::string("fix ") + id + " tdem/clump";
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     fail(where_ + " requires atom_style sphere/granular attributes (radius, rmass, omega, torque); atom_style '" +
@@ -84,7 +85,7 @@ FixTDEMClump::FixTDEMClump(LAMMPS* lmp, int narg, char** arg)
 }
 
 FixTDEMClump::~FixTDEMClump() {
-  if (tdem::liggghts::clump_link::active == this) tdem::liggghts::clump_link::active = nullptr;
+  if (tdem::liggghts::clump_link::active == &link_) tdem::liggghts::clump_link::active = nullptr;
   atom->delete_callback(id, 0);
   atom->delete_callback(id, 1);
 }
@@ -230,10 +231,10 @@ double FixTDEMClump::extend_cut_ghost() { return 2.0 * bodies_.reach(); }
 void FixTDEMClump::init() {
   if (correction_ != cl::Correction::none) {
     auto*& act = tdem::liggghts::clump_link::active;
-    if (act && act != this)
-      fail(where_ + ": keyword 'correction': another fix tdem/clump already applies a multiple-contact correction "
-                    "(at most one fix may have a correction other than none)");
-    act = this;
+    if (act && act != &link_)
+      fail(where_ + ": keyword 'correction': another fix (tdem/clump or tdem/correction) already applies a "
+                    "multiple-contact correction (at most one fix may have a correction other than none)");
+    act = &link_;
   }
   if (args_.bodies_molecule && form_bodies() > 0) {
     formed_ = true;
@@ -312,12 +313,14 @@ void FixTDEMClump::final_integrate() {
 }
 
 void FixTDEMClump::setup_pre_force(int) {
-  setup_correction();
+  double d = 0.0;  // spheres of clumps not inserted yet
+  for (const auto& s : bodies_.tmpl().body) d = std::max(d, 2.0 * s.r);
+  link_.setup(correction_, where_, d);
   pre_force(0);
 }
 
 void FixTDEMClump::pre_force(int) {
-  if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share) build_tally();
+  if (link_.tallies()) link_.tally();
 }
 
 /* ---------------------------------------------------------------------- output */

@@ -32,17 +32,14 @@
 
 #include "fix.h"
 
-#include "contact/multi_contact/contact_tally.h"
-#include "contact/multi_contact/contact_tally_mpi.h"
-#include "contact/multi_contact/multi_contact.h"
+#include "clump_correction.h"
 #include "fixes/clumps/body_output.h"
 #include "fixes/clumps/body_set.h"
 #include "fixes/clumps/clump_args.h"
-#include "tdem_liggghts_clump_link.h"
 
 namespace LAMMPS_NS {
 
-class FixTDEMClump : public Fix, public tdem::liggghts::clump_link::Correction {
+class FixTDEMClump : public Fix {
  public:
   FixTDEMClump(class LAMMPS*, int, char**);
   ~FixTDEMClump();
@@ -56,8 +53,6 @@ class FixTDEMClump : public Fix, public tdem::liggghts::clump_link::Correction {
   void pre_neighbor();
   void setup_pre_force(int);
   void pre_force(int);
-  // multiple-contact correction (tdem_liggghts_clump_link.h): called by the surface model tdem/clump
-  double prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const override;
   void reset_dt();
   double compute_scalar();
   double compute_vector(int);
@@ -85,16 +80,18 @@ class FixTDEMClump : public Fix, public tdem::liggghts::clump_link::Correction {
   tdem::clumps::ClumpArgs args_;  // the fix's arguments (insert, bodies molecule, correction)
   bool restarted_, formed_, have_force_, need_set_;
 
-  // multiple-contact correction (docs/clumps_liggghts.md, "Multiple-contact correction")
+  // multiple-contact correction (docs/clumps_liggghts.md, "Multiple-contact correction"): the bodies
+  // of this fix as the sides of the shared LIGGGHTS correction (clump_correction.h)
   tdem::clumps::Correction correction_;
-  tdem::clumps::ContactTally tally_;
-  class PairGran* pair_gran_;
-  std::vector<class FixWallGran*> walls_;                      // primitive wall/gran fixes
-  std::vector<std::pair<const void*, std::int64_t>> wall_sides_;  // contact-model owner -> side id
-  tdem::clumps::TallyExchange exchange_;  // scratch of the MPI merge of tally_
-  void setup_correction();
-  void build_tally();
-  double inverse_side_mass(int a, const double* n) const;
+  struct Sides : CorrectionSides {
+    const tdem::clumps::BodySet* bodies = nullptr;
+    bool in_body(int i) const override { return bodies->body_index()[i] >= 0; }
+    std::int64_t key(int i) const override { return bodies->body_key()[i]; }
+    double inverse_side_mass(int i, const double* n) const override {
+      return bodies->inverse_side_mass(bodies->body_index()[i], bodies->sphere_index()[i], n);
+    }
+  } sides_;
+  ClumpCorrection link_;
 
   [[noreturn]] void fail(const std::string& msg);
   void log(const std::string& msg);

@@ -1,56 +1,43 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LIGGGHTS 3.8: fix tdem/clump, the multiple-contact correction (setup_correction, the
-// per-step contact tally, prepare). The bodies, the time stepping and restart are in
-// fix_tdem_clump.cpp.
-#include "fix_tdem_clump.h"
+// tdem for LIGGGHTS 3.8: the multiple-contact correction for any bodies (see clump_correction.h).
+#include "clump_correction.h"
 
 #include <mpi.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <cstring>
-#include <map>
 #include <string>
 
 #include "atom.h"
-#include "atom_vec.h"
-#include "comm.h"
-#include "domain.h"
 #include "error.h"
 #include "fix_wall_gran.h"
 #include "force.h"
-#include "group.h"
-#include "memory.h"
+#include "lammps.h"
 #include "modify.h"
 #include "neigh_list.h"
 #include "neighbor.h"
 #include "pair_gran.h"
 #include "primitive_wall.h"
-#include "region.h"
-#include "update.h"
 
-#include "fixes/clumps/clump_args.h"
 #include "tdem_liggghts_ids.h"
 
 using namespace LAMMPS_NS;
-using namespace FixConst;
 namespace cl = tdem::clumps;
-using cl::Vec3;
 
 namespace {
-// side ids of the contact tally: body key (molecule ID) >= 1, free sphere -(tag + 1), wall kWallSide + fix index
+// side ids of the contact tally: body key >= 1, free sphere -(tag + 1), wall kWallSide + fix index
 constexpr std::int64_t kWallSide = std::int64_t(1) << 40;
 }  // namespace
 
-/* ---------------------------------------------------------------------- multiple-contact correction */
-
 // The granular pair and the wall/gran fixes whose contacts are tallied. The correction acts through
 // the surface model tdem/clump (surface_model_tdem_clump.h): a pair style or wall/gran fix without
-// it is an error (its clump contacts would silently stay uncorrected).
-void FixTDEMClump::setup_correction() {
-  const std::string what = where_ + ": keyword 'correction " + std::string(cl::to_string(correction_)) + "': ";
+// it is an error (its body contacts would silently stay uncorrected).
+void ClumpCorrection::setup(cl::Correction mode, const std::string& where, double diameter) {
+  mode_ = mode;
+  Force* force = lmp_->force;
+  auto fail = [&](const std::string& msg) { lmp_->error->all(FLERR, msg.c_str()); };
+  const std::string what = where + ": keyword 'correction " + std::string(cl::to_string(mode_)) + "': ";
   pair_gran_ = force->pair ? dynamic_cast<PairGran*>(force->pair) : nullptr;
   if (force->pair && !pair_gran_)
     fail(what + "pair style '" + std::string(force->pair_style) +
@@ -61,6 +48,7 @@ void FixTDEMClump::setup_correction() {
          "tangential T surface tdem/clump), through which the correction acts");
   walls_.clear();
   wall_sides_.clear();
+  Modify* modify = lmp_->modify;
   for (int m = 0; m < modify->nfix; m++) {
     Fix* f = modify->fix[m];
     if (std::strncmp(f->style, "wall/gran", 9) != 0) continue;
@@ -71,7 +59,7 @@ void FixTDEMClump::setup_correction() {
            ") has no 'surface tdem/clump'; add 'surface tdem/clump' to its contact model (fix ID group wall/gran "
            "model M tangential T surface tdem/clump ...), through which the correction acts");
     if (w->is_mesh_wall()) {
-      if (correction_ == cl::Correction::count || correction_ == cl::Correction::overlap_share)
+      if (tallies())
         fail(what + "fix " + std::string(f->id) + " is a mesh wall; count and overlap support primitive walls only "
                                                     "(allowed with meshes: none, local_mass)");
       continue;
@@ -80,37 +68,39 @@ void FixTDEMClump::setup_correction() {
     wall_sides_.push_back({owner, kWallSide + m});
   }
   // overlaps are at most a sphere diameter (the tally's fixed point resolves 2^-80 of it)
-  double dmax = 0.0;
-  for (const auto& s : bodies_.tmpl().body) dmax = std::max(dmax, 2.0 * s.r);
-  for (int i = 0; i < atom->nlocal; i++) dmax = std::max(dmax, 2.0 * atom->radius[i]);
+  double dmax = diameter;
+  for (int i = 0; i < lmp_->atom->nlocal; i++) dmax = std::max(dmax, 2.0 * lmp_->atom->radius[i]);
   double all = dmax;
-  MPI_Allreduce(&dmax, &all, 1, MPI_DOUBLE, MPI_MAX, world);
+  MPI_Allreduce(&dmax, &all, 1, MPI_DOUBLE, MPI_MAX, lmp_->world);
   tally_.set_length_scale(all > 0.0 ? all : 1.0);
 }
 
-// Every touching contact with a body of this fix on at least one side, per pair of sides, global
-// over the ranks (contact_tally.h). Same touching tests as the pair loop (rsq < radsum^2) and the
-// primitive wall loop (resolveContact <= 0).
-void FixTDEMClump::build_tally() {
+// a side of the tally: the body key, or -(tag + 1) for a free sphere
+std::int64_t ClumpCorrection::side(int a) const {
+  return sides_.in_body(a) ? sides_.key(a) : -(std::int64_t(lmp_->atom->tag[a]) + 1);
+}
+
+// Every touching contact with a body on at least one side, per pair of sides, global over the
+// ranks (contact_tally.h). Same touching tests as the pair loop (rsq < radsum^2) and the primitive
+// wall loop (resolveContact <= 0).
+void ClumpCorrection::tally() {
   tally_.clear();
+  Atom* atom = lmp_->atom;
   const int nlocal = atom->nlocal;
   double** x = atom->x;
   const double* radius = atom->radius;
   const int* tag = atom->tag;
-  const int* bodyidx = bodies_.body_index();
-  const std::int64_t* key = bodies_.body_key();
-  // sides: the body key (molecule ID, the same on every rank), a free sphere -(tag + 1)
-  auto side = [&](int a) -> std::int64_t { return bodyidx[a] >= 0 ? key[a] : -(std::int64_t(tag[a]) + 1); };
   if (pair_gran_ && pair_gran_->list) {
     NeighList* list = pair_gran_->list;
-    const bool newton = force->newton_pair != 0;
+    const bool newton = lmp_->force->newton_pair != 0;
     for (int ii = 0; ii < list->inum; ii++) {
       const int i = list->ilist[ii];
       const int* jlist = list->firstneigh[i];
       const int jnum = list->numneigh[i];
+      const bool bi = sides_.in_body(i);
       for (int jj = 0; jj < jnum; jj++) {
         const int j = jlist[jj] & NEIGHMASK;
-        if (bodyidx[i] < 0 && bodyidx[j] < 0) continue;
+        if (!bi && !sides_.in_body(j)) continue;
         const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
         const double rsq = dx * dx + dy * dy + dz * dz;
         const double radsum = radius[i] + radius[j];
@@ -130,49 +120,44 @@ void FixTDEMClump::build_tally() {
     if (!pw) continue;
     const int bit = walls_[w]->groupbit;
     for (int i = 0; i < nlocal; i++) {
-      if (bodyidx[i] < 0 || !(mask[i] & bit)) continue;
+      if (!sides_.in_body(i) || !(mask[i] & bit)) continue;
       double delta[3];
       const double d = pw->resolveContact(x[i], radius[i], delta);
-      if (d <= 0.0) tally_.add(key[i], wall_sides_[w].second, -d);
+      if (d <= 0.0) tally_.add(sides_.key(i), wall_sides_[w].second, -d);
     }
   }
-  cl::merge_over_ranks(tally_, world, exchange_);
+  cl::merge_over_ranks(tally_, lmp_->world, exchange_);
 }
 
-// 1/M + (r x n).I^-1 (r x n) of the body of atom a (r: sphere centre - com; the contact point lies
-// on the normal through the centre, so r x n is that of the contact point), 1/m of a free sphere.
-double FixTDEMClump::inverse_side_mass(int a, const double* n) const {
-  const int b = bodies_.body_index()[a];
-  return b < 0 ? 1.0 / atom->rmass[a] : bodies_.inverse_side_mass(b, bodies_.sphere_index()[a], n);
+// 1/M + (r x n).I^-1 (r x n) of the body of atom a, 1/m of a free sphere
+double ClumpCorrection::inverse_mass(int a, const double* n) const {
+  return sides_.in_body(a) ? sides_.inverse_side_mass(a, n) : 1.0 / lmp_->atom->rmass[a];
 }
 
-double FixTDEMClump::prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const {
+double ClumpCorrection::prepare(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, const void* owner) const {
   const int i = sidata.i;
-  const int* bodyidx = bodies_.body_index();
-  const int bi = bodyidx[i];
+  const bool bi = sides_.in_body(i);
   std::int64_t a, b;
   if (sidata.is_wall) {
-    if (bi < 0) return 1.0;
-    if (correction_ == cl::Correction::local_mass) {
-      sidata.meff = 1.0 / inverse_side_mass(i, sidata.en);
+    if (!bi) return 1.0;
+    if (mode_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / inverse_mass(i, sidata.en);
       return 1.0;
     }
-    a = bodies_.body_key()[i];
+    a = sides_.key(i);
     b = -1;
     for (const auto& ws : wall_sides_)
       if (ws.first == owner) b = ws.second;
     if (b < 0) return 1.0;
   } else {
     const int j = sidata.j;
-    const int bj = bodyidx[j];
-    if (bi < 0 && bj < 0) return 1.0;
-    if (correction_ == cl::Correction::local_mass) {
-      sidata.meff = 1.0 / (inverse_side_mass(i, sidata.en) + inverse_side_mass(j, sidata.en));
+    if (!bi && !sides_.in_body(j)) return 1.0;
+    if (mode_ == cl::Correction::local_mass) {
+      sidata.meff = 1.0 / (inverse_mass(i, sidata.en) + inverse_mass(j, sidata.en));
       return 1.0;
     }
-    const std::int64_t* key = bodies_.body_key();
-    a = bi >= 0 ? key[i] : -(std::int64_t(atom->tag[i]) + 1);
-    b = bj >= 0 ? key[j] : -(std::int64_t(atom->tag[j]) + 1);
+    a = side(i);
+    b = side(j);
   }
-  return tally_.pair_factor(correction_, tally_.find(a, b), sidata.deltan);
+  return tally_.pair_factor(mode_, tally_.find(a, b), sidata.deltan);
 }
