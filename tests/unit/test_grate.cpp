@@ -617,6 +617,11 @@ TEST(GrateMixing, RandomFluctuationsOfKnownVariance) {
   const std::string e = error_of([&] { mx::local_velocity(n, x.data(), v.data(), -1.0); });
   EXPECT_NE(e.find("radius"), std::string::npos) << e;
   EXPECT_NE(e.find("-1"), std::string::npos) << e;
+  // a velocity that is not a finite number is named (the fixed-point neighbour sums cannot hold it)
+  std::vector<double> vbad(v);
+  vbad[7] = std::nan("");
+  const std::string eb = error_of([&] { mx::local_velocity(n, x.data(), vbad.data(), 1.5 * a, per); });
+  EXPECT_NE(eb.find("velocity"), std::string::npos) << eb;
 }
 
 // Columns of particles stacked on a flat grate at height zg: the top particle has D = 0, the one
