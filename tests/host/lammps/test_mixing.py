@@ -20,6 +20,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
+from mixing_report import GRIDS, held  # noqa: E402 (tests/host)
 import mixing_ref as mr  # noqa: E402
 
 args = lc.parse_args(sys.argv)
@@ -319,19 +320,6 @@ def fly_data(d, nx=10):
 
 
 FLY_RUN = "run 300\nwrite_dump all custom dump.txt id x y z f_d[1] f_d[2] f_d[3] f_d[4] modify sort id format float %.17g\n"
-
-
-GRIDS = ((1, ""), (2, "processors 2 1 1"), (4, "processors 1 2 2"), (8, "processors 2 2 2"), (8, "processors 1 4 2"))
-
-
-def held(out):
-    """{(style, rank): (owned, halo, group)} of the last evaluation, from TDEM_MIXING_REPORT lines."""
-    h = {}
-    for line in out.splitlines():
-        w = line.split()
-        if line.startswith("tdem mixing report:") and len(w) >= 13:
-            h[(w[3], int(w[5]))] = (int(w[9]), int(w[11]), int(w[13]))
-    return h
 
 
 def part_mpi():

@@ -25,6 +25,7 @@ import mixing_ref as mr  # noqa: E402
 
 sys.path.insert(0, HERE)
 import tdem_lig as T  # noqa: E402
+from mixing_report import GRIDS, held  # noqa: E402 (tests/host)
 
 ap = argparse.ArgumentParser()
 ap.add_argument("--tdem", required=True)
@@ -243,19 +244,6 @@ def fly(d, nx=10):
     v = np.column_stack([0.2 + 0.25 * rng.uniform(-1, 1, len(x)), 0.1 * rng.uniform(-1, 1, len(x)),
                          0.025 * rng.uniform(-1, 1, len(x))])
     write_data(d, x, np.full(len(x), 0.01), v, box=((0, 0.01 * nx), (0, 0.04), (-0.01, 0.1)))
-
-
-GRIDS = ((1, ""), (2, "processors 2 1 1"), (4, "processors 1 2 2"), (8, "processors 2 2 2"), (8, "processors 1 4 2"))
-
-
-def held(out):
-    """{(style, rank): (owned, halo, group)} of the last evaluation, from TDEM_MIXING_REPORT lines."""
-    h = {}
-    for line in out.splitlines():
-        w = line.split()
-        if line.startswith("tdem mixing report:") and len(w) >= 13:
-            h[(w[3], int(w[5]))] = (int(w[9]), int(w[11]), int(w[13]))
-    return h
 
 
 def part_parallel():

@@ -75,10 +75,9 @@ void ClumpCorrection::setup(cl::Correction mode, const std::string& where, doubl
   tally_.set_length_scale(all > 0.0 ? all : 1.0);
 }
 
-// a side of the tally: the body key, or -(tag + 1) for a free sphere
-std::int64_t ClumpCorrection::side(int a) const {
-  return sides_.in_body(a) ? sides_.key(a) : -(std::int64_t(lmp_->atom->tag[a]) + 1);
-}
+// a side of the tally: the body key (>= 1), or -(tag + 1) for a free sphere; kept per atom (owned and
+// ghost) by tally() for this step's contacts
+std::int64_t ClumpCorrection::side(int a) const { return side_[a]; }
 
 // Every touching contact with a body on at least one side, per pair of sides, global over the
 // ranks (contact_tally.h). Same touching tests as the pair loop (rsq < radsum^2) and the primitive
@@ -90,6 +89,9 @@ void ClumpCorrection::tally() {
   double** x = atom->x;
   const double* radius = atom->radius;
   const int* tag = atom->tag;
+  const int nall = nlocal + atom->nghost;
+  if (static_cast<int>(side_.size()) < nall) side_.resize(atom->nmax > nall ? atom->nmax : nall);
+  for (int a = 0; a < nall; a++) side_[a] = sides_.in_body(a) ? sides_.key(a) : -(std::int64_t(tag[a]) + 1);
   if (pair_gran_ && pair_gran_->list) {
     NeighList* list = pair_gran_->list;
     const bool newton = lmp_->force->newton_pair != 0;
@@ -97,15 +99,15 @@ void ClumpCorrection::tally() {
       const int i = list->ilist[ii];
       const int* jlist = list->firstneigh[i];
       const int jnum = list->numneigh[i];
-      const bool bi = sides_.in_body(i);
+      const std::int64_t a = side_[i];
       for (int jj = 0; jj < jnum; jj++) {
         const int j = jlist[jj] & NEIGHMASK;
-        if (!bi && !sides_.in_body(j)) continue;
+        const std::int64_t b = side_[j];
+        if (a < 0 && b < 0) continue;  // two free spheres
         const double dx = x[i][0] - x[j][0], dy = x[i][1] - x[j][1], dz = x[i][2] - x[j][2];
         const double rsq = dx * dx + dy * dy + dz * dz;
         const double radsum = radius[i] + radius[j];
         if (!(rsq < radsum * radsum)) continue;
-        const std::int64_t a = side(i), b = side(j);
         if (a == b) continue;
         // newton off: a pair with a ghost partner is in the lists of both owners' ranks (or twice
         // on one rank across a periodic boundary): counted where tag[i] <= tag[j] (equal: two
@@ -120,10 +122,10 @@ void ClumpCorrection::tally() {
     if (!pw) continue;
     const int bit = walls_[w]->groupbit;
     for (int i = 0; i < nlocal; i++) {
-      if (!sides_.in_body(i) || !(mask[i] & bit)) continue;
+      if (side_[i] < 0 || !(mask[i] & bit)) continue;
       double delta[3];
       const double d = pw->resolveContact(x[i], radius[i], delta);
-      if (d <= 0.0) tally_.add(sides_.key(i), wall_sides_[w].second, -d);
+      if (d <= 0.0) tally_.add(side_[i], wall_sides_[w].second, -d);
     }
   }
   cl::merge_over_ranks(tally_, lmp_->world, exchange_);
