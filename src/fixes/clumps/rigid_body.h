@@ -152,6 +152,18 @@ inline Mat3 inverse_inertia_space(const State& s, const Body& b) {
   return mul(D, transpose(R));
 }
 
+// Inverse inertia tensor in the space frame, R diag(1/I) R^T, of the principal moments I along the
+// columns of R (body -> space), as a stock rigid-body fix keeps them. A zero moment (an axis the
+// fix does not turn about: rods, points) contributes nothing.
+inline Mat3 inverse_inertia_space(const Mat3& R, const Vec3& principal) {
+  Mat3 D{};
+  for (int j = 0; j < 3; ++j) {
+    const double inv = principal[j] > 0.0 ? 1.0 / principal[j] : 0.0;
+    for (int i = 0; i < 3; ++i) D[i][j] = R[i][j] * inv;
+  }
+  return mul(D, transpose(R));
+}
+
 inline double rotational_energy(const State& s, const Body& b) {
   const Vec3 pi = body_angular_momentum(s);
   return 0.5 * (pi[0] * pi[0] / b.inertia[0] + pi[1] * pi[1] / b.inertia[1] + pi[2] * pi[2] / b.inertia[2]);

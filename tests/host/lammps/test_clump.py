@@ -37,6 +37,8 @@ Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|lo
                    the closed form of m_loc predicts
   corr_stock       the correction with bodies of the stock fix rigid/small (fix tdem/correction): flat
                    faces N = 2, 4, 8 on the wall and N = 4 body-body, the closed forms as corr_flat; bad input
+  corr_stock_local local_mass with rigid/small bodies: the tilted dimer of corr_local_mass (wall and
+                   pair), the law's e and t_c at the contact point; -np 2 with the body split equals -np 1
   corr_mpi         pour of tetra clumps with 'overlap', 'count' and 'local_mass': -np 2 equals -np 1;
                    newton on equals newton off (pairs with a ghost partner counted once); restart
                    with 'overlap' continues identically; correction none is bitwise the default
@@ -1072,24 +1074,107 @@ def part_corr_stock():
               "%.2g <= 1e-12, the round-off of xcm/vcm)" % worst)
     # bad input names what is wrong
     write_flat(wd, 2, r, d, [(z0, -v0)])
-    cases = [("fix corr all tdem/correction local_mass bodies rb", "allowed here: count, overlap"),
-             ("fix corr all tdem/correction half bodies rb", "correction 'half' is unknown; allowed: count, overlap"),
+    cases = [("fix corr all tdem/correction half bodies rb",
+              "correction 'half' is unknown; allowed: count, overlap, local_mass"),
              ("fix corr all tdem/correction overlap bodies nosuch", "fix nosuch does not exist"),
              ("fix corr all tdem/correction overlap bodies w", "exports no rigid bodies"),
              ("fix corr all tdem/correction overlap", "expected 3 arguments")]
-    for line, expect in cases:
-        rc, out = lc.run(TDEM, CORR_STOCK.format(e=e, tc=tc, corr=line, wall=wall, dt=dt, more="", n=10), wd,
+    rigid = CORR_STOCK.replace("rigid/small molecule", "rigid molecule")
+    for text, line, expect in [(CORR_STOCK, l, x) for l, x in cases] + [
+            (rigid, "fix corr all tdem/correction local_mass bodies rb", "only the rigid/small styles export")]:
+        rc, out = lc.run(TDEM, text.format(e=e, tc=tc, corr=line, wall=wall, dt=dt, more="", n=10), wd,
                          "in.sbad", check=False, timeout=120)
         err = [l for l in out.splitlines() if "ERROR" in l]
         chk.check(rc != 0 and rc < 128 and err and expect in " ".join(err),
                   "%-50s -> %s" % (line[:50], err[0][:140] if err else "no error (rc %d)" % rc))
 
 
+# the tilted dimer of corr_local_mass with the bodies of fix rigid/small
+STOCK_LOCAL = (LOCAL.replace("comm_modify vel yes\n", "comm_modify vel yes cutoff 0.03\n")
+               .replace("fix c all tdem/clump template row file row.txt density 2500 {corr}\n",
+                        "fix rb all rigid/small molecule\n{corr}\n")
+               .replace("thermo_style custom step f_c[1][4] f_c[1][7] {more} v_fz\n",
+                        "thermo_style custom step {more} v_fz\n"))
+
+
+def part_corr_stock_local():
+    """correction local_mass with the bodies of the stock fix rigid/small (fix tdem/correction): the
+    tilted dimer of corr_local_mass on the wall and on a frozen sphere gives the law's e and t_c at the
+    contact point, none the m_loc closed form; -np 2 with the dimer split over the ranks equals -np 1."""
+    wd = lc.workdir("clump_corr_stock_local")
+    e, tc, r, d, v0 = 0.8, 1e-4, 0.002, 0.0045, 0.1
+    dt = tc / 4000
+    theta = math.radians(30.0)
+    m = 4.0 / 3.0 * math.pi * r ** 3 * 2500.0
+    M = 2 * m
+    Iyy = 2 * (0.4 * m * r * r + m * (0.5 * d) ** 2)  # rigid/small: extended spheres add 2/5 m r^2
+    m_loc = 1.0 / (1.0 / M + (0.5 * d * math.cos(theta)) ** 2 / Iyy)
+    e_none = lsd_e(e, tc, M / m_loc)
+    wall = "fix w all tdem/wall/gran normal lsd restitution %g %g tangential cundall_strack 0.8 0 zplane 0 NULL" % (e, tc)
+    nsteps = int(1.5 * tc / dt)
+
+    def impact(name, z_low, text, np_=1):
+        _, out = lc.run(TDEM, text, wd, "in." + name, np_=np_, mpirun=MPIRUN)
+        rows = np.array([[float(x) for x in l.split()] for l in lc.thermo_blocks(out)[1:]])
+        t = rows[:, 0] * dt
+        vz1 = rows[:, -1]
+        z1 = (z_low + 1e-7) + np.concatenate([[0.0], np.cumsum(0.5 * (vz1[1:] + vz1[:-1]) * dt)])
+        ts, te, _, i1 = crossing(t, z_low - z1, dt)
+        return (vz1[i1] + (vz1[i1 + 1] - vz1[i1]) * (te - t[i1]) / dt) / v0, te - ts, rows
+
+    res = {}
+    for corr in ("none", "local_mass"):
+        line = "" if corr == "none" else "fix corr all tdem/correction local_mass bodies rb"
+        write_row(wd, 2, r, d, r + 1e-7, theta, v0)
+        res[corr] = impact("w" + corr, r, STOCK_LOCAL.format(e=e, tc=tc, corr=line, wall=wall, dt=dt, more="",
+                                                             n=nsteps))
+        print("rigid/small, tilted dimer (30 deg) on the wall, correction %-10s: contact-point e %.6f, contact %.4e s "
+              "(law e %.2f; m_loc closed form with the body mass %.6f)" % (corr, res[corr][0], res[corr][1], e, e_none))
+        # the same through pair tdem/gran on a frozen sphere of radius 2r right below the lower sphere
+        write_row(wd, 2, r, d, 3 * r + 1e-7, theta, v0)
+        x1 = -0.5 * d * math.cos(theta)
+        with open(os.path.join(wd, "body.data")) as f:
+            text = f.read()
+        text = text.replace("2 atoms", "3 atoms").replace(
+            "\n\nVelocities\n\n", "\n3 1 %.17g 2500 %.17g 0 0\n\nVelocities\n\n" % (4 * r, x1)).replace(
+            "\n\nMolecules\n\n", "\n3 0 0 0 0 0 0\n\nMolecules\n\n") + "3 0\n"
+        with open(os.path.join(wd, "body.data"), "w") as f:
+            f.write(text)
+        inp = STOCK_LOCAL.replace("fix rb all", "group body molecule 1\ngroup ball id 3\nfix fr ball freeze\n"
+                                                "fix rb body")
+        res["p" + corr] = impact("p" + corr, 3 * r, inp.format(e=e, tc=tc, corr=line, wall="", dt=dt, more="",
+                                                                  n=nsteps))
+        print("rigid/small, tilted dimer on a frozen sphere (pair), correction %-10s: contact-point e %.6f, contact "
+              "%.4e s" % (corr, res["p" + corr][0], res["p" + corr][1]))
+    for k, what in (("local_mass", "wall"), ("plocal_mass", "pair")):
+        ee, et = abs(res[k][0] - e) / e, abs(res[k][1] - tc) / tc
+        chk.check(ee <= 2e-3 and et <= 2e-3, "rigid/small, %s, local_mass: contact-point e %.6f, contact time %.6g s "
+                  "= the law's e %.2f and t_c %g s (rel err %.2g, %.2g <= 2e-3)" % (what, res[k][0], res[k][1], e, tc,
+                                                                                    ee, et))
+    for k, what in (("none", "wall"), ("pnone", "pair")):
+        en = abs(res[k][0] - e_none) / e_none
+        chk.check(en <= 5e-3, "rigid/small, %s, none: contact-point e %.6f = the m_loc closed form %.6f (rel err %.2g "
+                  "<= 5e-3)" % (what, res[k][0], e_none, en))
+    # -np 2, the dimer split over the ranks at x = 0 (one sphere on each): the same impact
+    write_row(wd, 2, r, d, r + 1e-7, theta, v0)
+    line = "fix corr all tdem/correction local_mass bodies rb"
+    runs = []
+    for np_ in (1, 2):
+        text = ("processors 2 1 1\n" if np_ == 2 else "") + STOCK_LOCAL.format(
+            e=e, tc=tc, corr=line, wall=wall, dt=dt, more="", n=nsteps)
+        runs.append(impact("np%d" % np_, r, text, np_))
+    per, worst = lc.rel_diff(runs[1][2][:, 1:], runs[0][2][:, 1:])
+    chk.check(runs[0][2].shape == runs[1][2].shape and worst <= 1e-12 and abs(runs[1][0] - e) / e <= 2e-3,
+              "rigid/small, local_mass, -np 2 (body split at x = 0): v_z of sphere 1 at every step equals -np 1 to "
+              "%.2g (<= 1e-12), contact-point e %.6f" % (worst, runs[1][0]))
+
+
 PARTS = {"nve_single": part_nve_single, "free_body": part_free_body, "flat_impact": part_flat_impact,
          "mpi": part_mpi, "restart": part_restart, "insert": part_insert, "bad_input": part_bad_input,
          "corr_flat": part_corr_flat, "corr_continuity": part_corr_continuity,
          "corr_local_mass": part_corr_local_mass, "corr_mpi": part_corr_mpi,
-         "ranks": part_ranks, "corr_stock": part_corr_stock}
+         "ranks": part_ranks, "corr_stock": part_corr_stock,
+         "corr_stock_local": part_corr_stock_local}
 if part == "all":
     for f in PARTS.values():
         f()

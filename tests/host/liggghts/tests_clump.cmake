@@ -5,7 +5,7 @@
 # insertion, bad input;
 # the multiple-contact correction (corr*: count/overlap flat impacts, continuity, local_mass, -np 2 and restart;
 # corrstock: the stock hertz model scaled through surface tdem/clump; corrsurf: the keyword's errors and warning);
-# stock_*: fix tdem/correction for the bodies of the stock fix multisphere.
+# stock_*: fix tdem/correction for the bodies of the stock fix multisphere (flat: count/overlap, local: local_mass).
 if(NOT TDEM_LIGGGHTS_CLUMP)
   return()
 endif()
@@ -20,7 +20,7 @@ foreach(_part nve torquefree flatface parallel restart insert bad examples perio
                        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
 # fix tdem/correction with the stock fix multisphere (test_clump_stock.py)
-foreach(_part flat bad)
+foreach(_part flat local bad)
   add_test(NAME liggghts.clump.stock_${_part}
            COMMAND ${TDEM_LIGGGHTS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump_stock.py --part ${_part}
                    --tdem $<TARGET_FILE:tdem-liggghts> --stock ${TDEM_LIGGGHTS_STOCK}
@@ -29,6 +29,6 @@ foreach(_part flat bad)
   set_tests_properties(liggghts.clump.stock_${_part} PROPERTIES LABELS liggghts TIMEOUT 300
                        ENVIRONMENT PYTHONDONTWRITEBYTECODE=1)
 endforeach()
-set_tests_properties(liggghts.clump.stock_flat PROPERTIES PROCESSORS 2)
+set_tests_properties(liggghts.clump.stock_flat liggghts.clump.stock_local PROPERTIES PROCESSORS 2)
 set_tests_properties(liggghts.clump.parallel liggghts.clump.insert liggghts.clump.examples
                      liggghts.clump.periodic liggghts.clump.corrpar liggghts.clump.ranks PROPERTIES PROCESSORS 2)
