@@ -8,6 +8,7 @@
 // wall integrated with rigid_body.h, with and without the multiple-contact correction.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -447,6 +448,51 @@ TEST(ClumpRigidBody, PointVelocityAndGyroscopicTerm) {
   const Vec3 wb1 = mul_t(rotation_matrix(n.q), angular_velocity(n, b));
   const Vec3 g = cross(pi0, wb0);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR((wb1[k] - wb0[k]) / h, g[k] / b.inertia[k], 1e-4 * norm(w) * norm(w));
+}
+
+// The sub-rotations' sin/cos of small angles (Taylor polynomials) agree with the library's to one
+// rounding of the value, over the whole small-angle range and across its edge; larger angles are the
+// library's own; the inverse inertia of a stock fix's principal moments and axes.
+TEST(ClumpRigidBody, SmallAngleSinCosAsAccurateAsTheLibrary) {
+  double worst_s = 0.0, worst_c = 0.0;
+  for (int k = -20000; k <= 20000; ++k) {
+    const double x = 0.0100003 * k / 20000.0 * (1.0 + 1e-7 * (k % 7));
+    double s, c;
+    detail::small_angle_sincos(x, s, c);
+    if (x != 0.0) worst_s = std::max(worst_s, std::fabs(s - std::sin(x)) / std::fabs(std::sin(x)));
+    worst_c = std::max(worst_c, std::fabs(c - std::cos(x)));
+  }
+  EXPECT_LE(worst_s, 2.3e-16);  // one unit in the last place (2^-52) and the library's own half
+  EXPECT_LE(worst_c, 1.2e-16);
+  double s, c;
+  detail::small_angle_sincos(0.3, s, c);
+  EXPECT_EQ(s, std::sin(0.3));
+  EXPECT_EQ(c, std::cos(0.3));
+  detail::small_angle_sincos(0.0, s, c);
+  EXPECT_EQ(s, 0.0);
+  EXPECT_EQ(c, 1.0);
+}
+
+TEST(ClumpRigidBody, InverseInertiaFromPrincipalAxes) {
+  const Quat q = qnormalise(Quat{0.9, 0.2, -0.3, 0.25});
+  const Mat3 R = rotation_matrix(q);
+  const Vec3 I{2.0, 3.0, 5.0};
+  const Mat3 inv = inverse_inertia_space(R, I);
+  // R^T inv R = diag(1/I)
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      double v = 0.0;
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) v += R[i][a] * inv[i][j] * R[j][b];
+      EXPECT_NEAR(v, a == b ? 1.0 / I[a] : 0.0, 1e-15) << a << b;
+    }
+  // a zero moment (an axis the fix does not turn about) adds nothing along that axis
+  const Mat3 rod = inverse_inertia_space(R, Vec3{0.0, 3.0, 3.0});
+  for (int i = 0; i < 3; ++i) {
+    double v = 0.0;
+    for (int j = 0; j < 3; ++j) v += rod[i][j] * R[j][0];
+    EXPECT_NEAR(v, 0.0, 1e-16);
+  }
 }
 
 TEST(ClumpRigidBody, SchemeNames) {
