@@ -13,9 +13,12 @@ LIGGGHTS: the same shapes and box, stock hertz + history; fix tdem/clump (insert
 stock fix multisphere (particletemplate/multisphere + insert/pack): each inserts its own clumps, so
 the scenes agree statistically; SETTLE steps, then STEPS timed steps in the same process.
 
-Runs are interleaved per rank count (tdem, stock, stock, tdem, repeated --rounds times): the runs
-of each fix are reported separately, the ratio of a fix's slowest to fastest run is the A/A control
-(how much the machine's noise alone moves a result), and ratio and speedup use the means. Reported from LAMMPS's and LIGGGHTS's own output:
+LAMMPS runs are interleaved over the fixes and the rank counts (per round: tdem and stock at 1 rank,
+both at 2 ranks, both at 2 ranks, both at 1 rank, in mirrored order; --rounds rounds), LIGGGHTS runs
+per rank count (tdem, stock, stock, tdem, repeated --rounds times): the runs of each fix are reported
+separately, the ratio of a fix's slowest to fastest run is the A/A control
+(how much the machine's noise alone moves a result), and ratio and speedup use the means; the median
+over the rounds of each round's ratio and speedup (from runs close in time) is given as well. Reported from LAMMPS's and LIGGGHTS's own output:
 loop time, the time per section (Pair, Neigh, Comm, Modify, Other), memory per rank; the memory
 per body is the difference of the per-rank memory with the body fix and with fix nve/sphere on the
 same spheres, divided by the bodies per rank (LAMMPS).
@@ -127,12 +130,14 @@ def lammps(exe, wd, n, settle, steps, rounds):
              "stock": "fix c all rigid/small molecule\n",
              "none": "fix c all nve/sphere\n"}
     res = {}
-    for np_ in (1, 2):
-        for k, what in enumerate(("tdem", "stock", "stock", "tdem") * rounds + ("none",)):
-            text = (lmp_head(n) + "read_data settle.data add append fix pm NULL Molecules\n" + fixes[what]
-                    + lmp_inter() + "thermo_style custom step atoms\nthermo {s}\nrun 100\nrun {s}\n".format(s=steps))
-            say("LAMMPS: %s on %d rank(s), %d steps" % (what, np_, steps))
-            res.setdefault((what, np_), []).append(last_run(run([exe], wd, "in.%s%d_%d" % (what, np_, k), text, np_)))
+    # one round: tdem and stock at 1 and 2 ranks in the order A1 B1 A2 B2 B2 A2 B1 A1, so that a slow
+    # phase of the machine touches both fixes and both rank counts of the round alike
+    order = [("tdem", 1), ("stock", 1), ("tdem", 2), ("stock", 2), ("stock", 2), ("tdem", 2), ("stock", 1), ("tdem", 1)]
+    for k, (what, np_) in enumerate(order * rounds + [("none", 1), ("none", 2)]):
+        text = (lmp_head(n) + "read_data settle.data add append fix pm NULL Molecules\n" + fixes[what]
+                + lmp_inter() + "thermo_style custom step atoms\nthermo {s}\nrun 100\nrun {s}\n".format(s=steps))
+        say("LAMMPS: %s on %d rank(s), %d steps (run %d of %d)" % (what, np_, steps, k + 1, 8 * rounds + 2))
+        res.setdefault((what, np_), []).append(last_run(run([exe], wd, "in.%s%d_%d" % (what, np_, k), text, np_)))
     return res
 
 
@@ -214,12 +219,42 @@ def table(res, title, stock_name):
             np_, "`tdem/clump`" if what == "tdem" else stock_name, " / ".join("%.3f" % x for x in loops),
             max(loops) / min(loops), sec["Pair"], sec["Neigh"], sec["Comm"], sec["Modify"], sec["Other"],
             runs[0]["mem"], ratio))
-    speed = []
+    speed, fastest, paired = [], [], []
     for what in ("tdem", "stock"):
         if (what, 1) in mean and (what, 2) in mean:
-            speed.append("%s %.2f" % ("tdem/clump" if what == "tdem" else stock_name.strip("`"),
-                                      mean[(what, 1)] / mean[(what, 2)]))
-    return ["## " + title, ""] + rows + ["", "Speedup 1 -> 2 ranks (loop time ratio of the means): " + ", ".join(speed), ""]
+            name = "tdem/clump" if what == "tdem" else stock_name.strip("`")
+            speed.append("%s %.2f" % (name, mean[(what, 1)] / mean[(what, 2)]))
+            best = [min(r["loop"] for r in res[(what, np_)]) for np_ in (1, 2)]
+            fastest.append("%s %.2f" % (name, best[0] / best[1]))
+    # ABBA blocks (tdem, stock, stock, tdem): the runs of a block are close in time, so a slow phase of
+    # the machine touches both fixes; the median over the blocks of stock / tdem
+    for np_ in (1, 2):
+        t, st = res.get(("tdem", np_), []), res.get(("stock", np_), [])
+        blocks = sorted((st[2 * j]["loop"] + st[2 * j + 1]["loop"]) / (t[2 * j]["loop"] + t[2 * j + 1]["loop"])
+                        for j in range(min(len(t), len(st)) // 2))
+        if blocks:
+            med = blocks[len(blocks) // 2] if len(blocks) % 2 else 0.5 * (blocks[len(blocks) // 2 - 1] +
+                                                                          blocks[len(blocks) // 2])
+            paired.append("%d rank%s: median **%.3f** (blocks %s)" % (np_, "s" if np_ > 1 else "", med,
+                                                                        " / ".join("%.3f" % b for b in blocks)))
+            best_ratio = min(r["loop"] for r in st) / min(r["loop"] for r in t)
+            paired[-1] += ", fastest runs %.3f" % best_ratio
+    # speedup per round (its two runs at 1 rank / its two at 2 ranks; rounds interleave the rank counts
+    # only where they are run in one order: LAMMPS)
+    per_round = []
+    for what in ("tdem", "stock"):
+        a, b = res.get((what, 1), []), res.get((what, 2), [])
+        sp = sorted((a[2 * j]["loop"] + a[2 * j + 1]["loop"]) / (b[2 * j]["loop"] + b[2 * j + 1]["loop"])
+                    for j in range(min(len(a), len(b)) // 2))
+        if sp:
+            med = sp[len(sp) // 2] if len(sp) % 2 else 0.5 * (sp[len(sp) // 2 - 1] + sp[len(sp) // 2])
+            per_round.append("%s median **%.2f** (%s)" % ("tdem/clump" if what == "tdem" else stock_name.strip("`"),
+                                                          med, " / ".join("%.2f" % x for x in sp)))
+    return ["## " + title, ""] + rows + [
+        "", "Speedup 1 -> 2 ranks (loop time ratio of the means): " + ", ".join(speed) +
+        "; of the fastest runs: " + ", ".join(fastest) + "; per round: " + "; ".join(per_round), "",
+        "tdem/stock speed per ABBA block (stock / tdem loop time of the block's two runs each): " + "; ".join(paired),
+        ""]
 
 
 def main():

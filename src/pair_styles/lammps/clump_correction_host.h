@@ -7,20 +7,23 @@
 //   ClumpView               per-step pointers: body index and key per atom, body mass, com, inverse
 //                           inertia (space frame); inverse local mass of one side
 // The global contact counts and overlap sums come from clumps/contact_tally_mpi.h
-// (merge_over_ranks; exact fixed-point sums, independent of the rank split).
+// (merge_with_neighbours; exact fixed-point sums, independent of the rank split).
 #pragma once
 
 #include "contact/multi_contact/contact_tally.h"
 #include "contact/multi_contact/contact_tally_mpi.h"
 #include "contact/multi_contact/multi_contact.h"
 
+#include "comm.h"
 #include "domain.h"
 #include "lammps_compat.h"
 #include "lammps.h"
 #include "error.h"
 #include "fix.h"
 #include "modify.h"
+#include "neighbor.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <mpi.h>
@@ -79,7 +82,26 @@ struct ClumpCorrection {
   bool shares() const {
     return correction() == tdem::clumps::Correction::count || correction() == tdem::clumps::Correction::overlap_share;
   }
-  void merge(MPI_Comm world) { tdem::clumps::merge_over_ranks(tally, world, buf); }
+  tdem::clumps::TallyNeighbours near;  // the ranks whose entries this rank's pairs may need
+  // the tally of this step, global for every pair this rank has: from the ranks within reach
+  // (contact_tally_mpi.h; the reach 3 x ghost cutoff + skin covers a body's extent, which the body
+  // fixes keep within the ghost cutoff, plus a contact and the drift of owned atoms), found again
+  // at every re-neighbouring; a triclinic box gathers from all ranks
+  void merge(LAMMPS_NS::LAMMPS *lmp) {
+    if (lmp->comm->nprocs == 1) return;
+    LAMMPS_NS::Domain *d = lmp->domain;
+    if (d->triclinic) {
+      tdem::clumps::merge_over_ranks(tally, lmp->world, buf);
+      return;
+    }
+    if (!near.known || lmp->neighbor->ago == 0) {
+      const double *cg = lmp->comm->cutghost;
+      const double reach = 3.0 * std::max(cg[0], std::max(cg[1], cg[2])) + lmp->neighbor->skin;
+      const bool periodic[3] = {d->xperiodic != 0, d->yperiodic != 0, d->zperiodic != 0};
+      near.find(lmp->world, d->sublo, d->subhi, periodic, d->prd, reach);
+    }
+    tdem::clumps::merge_with_neighbours(tally, lmp->world, near, buf);
+  }
 };
 
 // Per-step view of the clump fix's body data.

@@ -250,7 +250,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
         if (rsq > radius[i] * radius[i]) continue;
         clump.tally.add(cv.key[i], side, radius[i] - sqrt(rsq));
       }
-      clump.merge(world);
+      clump.merge(lmp);
     }
   }
 

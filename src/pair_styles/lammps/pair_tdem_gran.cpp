@@ -229,7 +229,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
           clump.tally.add(a, b, xi, newton_pair || j < nlocal || tag[i] <= tag[j]);
         }
       }
-      clump.merge(world);
+      clump.merge(lmp);
     }
   }
 

@@ -37,6 +37,8 @@ Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|lo
                    the closed form of m_loc predicts
   corr_stock       the correction with bodies of the stock fix rigid/small (fix tdem/correction): flat
                    faces N = 2, 4, 8 on the wall and N = 4 body-body, the closed forms as corr_flat; bad input
+  corr_wide        the contact tally exchanged with the neighbouring ranks only: 8 slabs, bodies on
+                   every boundary, -np 8 = -np 1 bitwise, single-contact e, two neighbours per rank
   corr_stock_local local_mass with rigid/small bodies: the tilted dimer of corr_local_mass (wall and
                    pair), the law's e and t_c at the contact point; -np 2 with the body split equals -np 1
   corr_mpi         pour of tetra clumps with 'overlap', 'count' and 'local_mass': -np 2 equals -np 1;
@@ -45,6 +47,7 @@ Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|lo
 """
 import math
 import os
+import re
 import shutil
 import sys
 
@@ -996,6 +999,97 @@ def part_ranks():
               "rods rebuilt at every step equal the default run after 6000 steps with contacts (%.3g <= 1e-9)" % worst)
 
 
+# a row of impacts along a long box, split into 8 slabs (corr_wide)
+WIDE = """
+units si
+atom_style sphere
+boundary p f f
+newton off
+comm_modify vel yes
+{procs}
+region box block 0 0.8 -0.05 0.05 0 0.1
+create_box 1 box
+fix pm all property/atom mol ghost yes
+read_data body.data add append fix pm NULL Molecules
+neigh_modify exclude molecule/intra all
+pair_style tdem/gran
+pair_coeff * * normal lsd restitution {e} {tc} tangential cundall_strack 0.8 0
+fix c all tdem/clump template flat file flat.txt density 2500 correction overlap
+fix w all tdem/wall/gran normal lsd restitution {e} {tc} tangential cundall_strack 0.8 0 zplane 0 NULL
+timestep {dt}
+thermo_style custom step atoms
+thermo_modify format float %.17g
+thermo 100
+run {n}
+write_dump all custom d.wide id mol x y z vx vy vz modify sort id format float %.17g
+"""
+
+
+def part_corr_wide():
+    """The contact tally's exchange with the neighbouring ranks only (contact_tally_mpi.h): 7 flat N = 4
+    bodies dropping on the wall and 7 pairs of N = 4 bodies hitting each other, centred on the 7
+    inner boundaries of 8 slabs along a long box (every body split over two ranks), correction
+    overlap. -np 8 (processors 8 1 1) equals -np 1 bitwise; every wall body leaves with the single-
+    contact e, every pair with the body-body single-contact e; each rank merges with its two
+    neighbouring slabs only (TDEM_TALLY_REPORT)."""
+    wd = lc.workdir("clump_corr_wide")
+    e, tc, r, d, v0 = 0.8, 1e-4, 0.002, 0.0045, 1.0
+    dt = tc / 2000
+    n = 4
+    pts = flat_template(n, r, d)
+    with open(os.path.join(wd, "flat.txt"), "w") as f:
+        f.write("".join("sphere %.17g %.17g %.17g %.17g\n" % (p[0], p[1], p[2], r) for p in pts))
+    # body k: (x, y, z of the com, vz); wall bodies at y = -0.03, pairs at y = +0.03 (lower one rising)
+    bodies = []
+    for k in range(1, 8):
+        bodies.append((0.1 * k, -0.03, r + 2e-6, -v0, "wall"))
+        bodies.append((0.1 * k, 0.03, 0.05, 0.5 * v0, "low"))
+        bodies.append((0.1 * k, 0.03, 0.05 + 2 * r + 2e-6, -0.5 * v0, "up"))
+    lines = ["wide", "", "%d atoms" % (n * len(bodies)), "1 atom types", "", "0 0.8 xlo xhi", "-0.05 0.05 ylo yhi",
+             "0 0.1 zlo zhi", "", "Atoms # sphere", ""]
+    vel, mol, k = [], [], 0
+    for b, (x, y, z, vz, _) in enumerate(bodies):
+        for p in pts:
+            k += 1
+            lines.append("%d 1 %.17g 2500 %.17g %.17g %.17g" % (k, 2 * r, x + p[0], y + p[1], z + p[2]))
+            vel.append("%d 0 0 %.17g 0 0 0" % (k, vz))
+            mol.append("%d %d" % (k, b + 1))
+    with open(os.path.join(wd, "body.data"), "w") as f:
+        f.write("\n".join(lines + ["", "Velocities", ""] + vel + ["", "Molecules", ""] + mol) + "\n")
+    nsteps = int(1.4 * tc / dt)
+    res = {}
+    for np_ in (1, 8):
+        text = WIDE.format(procs="processors 8 1 1" if np_ == 8 else "", e=e, tc=tc, dt=dt, n=nsteps)
+        os.environ["TDEM_TALLY_REPORT"] = "1"
+        try:
+            _, out = lc.run(TDEM, text, wd, "in.np%d" % np_, np_=np_, mpirun=MPIRUN)
+        finally:
+            del os.environ["TDEM_TALLY_REPORT"]
+        cols, a = lc.read_dump(os.path.join(wd, "d.wide"))
+        res[np_] = (a, out)
+    a1, a8 = res[1][0], res[8][0]
+    chk.check(a1.shape == a8.shape and np.array_equal(a1, a8),
+              "-np 8 (every body split over two slabs) equals -np 1 bitwise after %d steps (%d spheres)"
+              % (nsteps, a1.shape[0]))
+    vz = {int(m): a1[a1[:, 1] == m, 7].mean() for m in np.unique(a1[:, 1])}
+    e_wall = [vz[3 * j + 1] / v0 for j in range(7)]
+    e_pair = [(vz[3 * j + 3] - vz[3 * j + 2]) / v0 for j in range(7)]
+    print("wall bodies: e %s; body pairs: e %s" % (np.array2string(np.array(e_wall), precision=6),
+                                                   np.array2string(np.array(e_pair), precision=6)))
+    worst = max(abs(x - e) / e for x in e_wall + e_pair)
+    chk.check(worst <= 1e-3, "every wall body and every body pair leaves with the single-contact e (rel err %.2g "
+              "<= 1e-3; without the correction N = 4 contacts give %.4f)" % (worst, closed_form_n(e, tc, n)[0]))
+    # (the ranks print concurrently: reports are found anywhere in the output)
+    rep = list(re.finditer(r"tdem tally: rank (\d+) of 8 merges with ranks \[([0-9,]*)\]", res[8][1]))
+    seen = {int(m.group(1)) for m in rep}
+    ok = seen == set(range(8))
+    for m in rep:
+        me = int(m.group(1))
+        ok = ok and sorted(int(x) for x in m.group(2).split(",") if x) == sorted({(me - 1) % 8, (me + 1) % 8})
+    chk.check(ok, "-np 8: each rank exchanges its tally with its two neighbouring slabs only (%d reports from ranks "
+              "%s, e.g. '%s')" % (len(rep), sorted(seen), rep[0].group(0) if rep else "none"))
+
+
 # ----------------------------------------------------------------------------- 9. correction, stock bodies
 # the impact of CORR_IMPACT with the bodies of fix rigid/small (and its atom map and ghost cutoff)
 CORR_STOCK = (CORR_IMPACT.replace("atom_style sphere\n", "atom_style sphere\natom_modify map array\n")
@@ -1174,7 +1268,7 @@ PARTS = {"nve_single": part_nve_single, "free_body": part_free_body, "flat_impac
          "corr_flat": part_corr_flat, "corr_continuity": part_corr_continuity,
          "corr_local_mass": part_corr_local_mass, "corr_mpi": part_corr_mpi,
          "ranks": part_ranks, "corr_stock": part_corr_stock,
-         "corr_stock_local": part_corr_stock_local}
+         "corr_stock_local": part_corr_stock_local, "corr_wide": part_corr_wide}
 if part == "all":
     for f in PARTS.values():
         f()

@@ -30,6 +30,7 @@ the code under test:
 """
 import math
 import os
+import re
 import shutil
 import sys
 
@@ -798,6 +799,74 @@ def part_corrlocal(args, checks):
                  % (out["none"][0], e_none, e1))
 
 
+def part_corrwide(args, checks):
+    """The contact tally exchanged with the neighbouring ranks only (contact_tally_mpi.h): 7 flat rods of
+    N = 4 dropped on the wall, centred on the 7 inner boundaries of 8 slabs along a long box (every rod
+    split over two ranks; slabs of 0.4 m, more than the reach 3 x the ghost cutoff of the 47.5 mm rods),
+    correction overlap, k and gamma for one contact on the body mass. -np 8
+    (processors 8 1 1) equals -np 1 bitwise, every rod leaves with the single-contact e, and each rank
+    merges with its two neighbouring slabs only (TDEM_TALLY_REPORT)."""
+    r, rho, dist, e1, t1, v0 = CORR_R, CORR_RHO, CORR_DIST, CORR_E, CORR_T, CORR_V
+    n = 4
+    M = n * 4.0 / 3.0 * math.pi * r ** 3 * rho
+    kpm, gpm = lsd_rates(e1, t1)
+    k, gamma = M * kpm, M * gpm
+    e_ref, _ = lsd_outcome(k, gamma, M)
+    dt = t1 / 2000.0
+    steps = int((2e-6 / v0 + 1.4 * t1) / dt)
+    d = T.workdir(args, "tdem_lig_clump_corrwide")
+    lines = [HEAD.replace("boundary f f f", "boundary p f f"), "{procs}",
+             "region b block 0 3.2 -0.05 0.05 -0.05 0.05 units box", "create_box 1 b",
+             "neighbor 0.001 bin", "neigh_modify delay 0 exclude molecule all"]
+    for b in range(1, 8):
+        for i in range(n):
+            lines.append("create_atoms 1 single %.17g 0 %.17g units box" % (0.4 * b + (i - 1.5) * dist, r + 2e-6))
+    lines.append("set group all diameter %.17g density %.17g vz %.17g" % (2 * r, rho, -v0))
+    for b in range(1, 8):
+        lines.append("group g%d id %d:%d" % (b, n * (b - 1) + 1, n * b))
+        lines.append("set group g%d mol %d" % (b, b))
+    lines += ["fix m_kn all property/global kn peratomtypepair 1 %.17g" % k,
+              "fix m_kt all property/global kt peratomtypepair 1 %.17g" % k,
+              "fix m_gn all property/global gamman_abs peratomtypepair 1 %.17g" % gamma,
+              "fix m_gt all property/global gammat_abs peratomtypepair 1 0.0",
+              "fix m_mu all property/global coefficientFriction peratomtypepair 1 0.0",
+              "pair_style gran model tdem/lsd tangential no_history surface tdem/clump parameters stiffness "
+              "absolute_damping on", "pair_coeff * *", "timestep %.17g" % dt,
+              "fix c all tdem/clump template rod shape rod %g %g %d density %.17g correction overlap" % (r, dist, n, rho),
+              "fix w all wall/gran model tdem/lsd tangential no_history surface tdem/clump primitive type 1 zplane "
+              "0.0 parameters stiffness absolute_damping on",
+              "thermo 100", "run %d" % steps,
+              "dump d all custom 1 dump.wide id mol x y z vx vy vz", "dump_modify d sort id format \"%d %d %.17g "
+              "%.17g %.17g %.17g %.17g %.17g\"", "run 0"]
+    text = "\n".join(lines) + "\n"
+    res = {}
+    os.environ["TDEM_TALLY_REPORT"] = "1"
+    try:
+        for np_ in (1, 8):
+            r_ = T.run(args.tdem, text.replace("{procs}", "processors 8 1 1" if np_ == 8 else ""), d, "wide%d" % np_,
+                       np_=np_, mpirun=args.mpirun)
+            res[np_] = (T.read_dump(os.path.join(d, "dump.wide"))[-1][2], r_.stdout)
+    finally:
+        del os.environ["TDEM_TALLY_REPORT"]
+    a1, a8 = res[1][0], res[8][0]
+    checks.check(a1.shape == a8.shape and np.array_equal(a1, a8),
+                 "corrwide: -np 8 (every rod split over two slabs) equals -np 1 bitwise after %d steps" % steps)
+    es = [a1[a1[:, 1] == b, 7].mean() / v0 for b in range(1, 8)]
+    worst = max(abs(e / e_ref - 1) for e in es)
+    print("corrwide: e of the 7 rods %s (single-contact closed form %.6f)" % (np.array2string(np.array(es), precision=6),
+                                                                          e_ref))
+    checks.check(worst < 1e-3, "corrwide: every rod leaves with the single-contact e (%.1e < 1e-3)" % worst)
+    # (the ranks print concurrently: reports are found anywhere in the output)
+    rep = list(re.finditer(r"tdem tally: rank (\d+) of 8 merges with ranks \[([0-9,]*)\]", res[8][1]))
+    seen = {int(m.group(1)) for m in rep}
+    ok = seen == set(range(8))
+    for m in rep:
+        me = int(m.group(1))
+        ok = ok and sorted(int(x) for x in m.group(2).split(",") if x) == sorted({(me - 1) % 8, (me + 1) % 8})
+    checks.check(ok, "corrwide: -np 8: each rank exchanges its tally with its two neighbouring slabs only (%d reports "
+                 "from ranks %s, e.g. '%s')" % (len(rep), sorted(seen), rep[0].group(0) if rep else "none"))
+
+
 def part_corrpar(args, checks):
     """-np 2 = -np 1 and restart = one run, with `correction overlap` (the pour scene: tetra clumps on each
     other and on the walls, contacts tallied over both ranks)."""
@@ -1007,7 +1076,7 @@ def main():
     def extra(p):
         p.add_argument("--part", required=True,
                        choices=["nve", "torquefree", "flatface", "parallel", "restart", "insert", "bad", "examples", "periodic", "ranks",
-                                "corrflat", "corrcont", "corrlocal", "corrpar", "corrstock", "corrsurf"])
+                                "corrflat", "corrcont", "corrlocal", "corrpar", "corrwide", "corrstock", "corrsurf"])
     args = T.parse_args(extra)
     checks = T.Checks()
     globals()["part_" + args.part](args, checks)

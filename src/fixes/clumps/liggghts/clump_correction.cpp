@@ -10,6 +10,8 @@
 #include <string>
 
 #include "atom.h"
+#include "comm.h"
+#include "domain.h"
 #include "error.h"
 #include "fix_wall_gran.h"
 #include "force.h"
@@ -128,7 +130,22 @@ void ClumpCorrection::tally() {
       if (d <= 0.0) tally_.add(side_[i], wall_sides_[w].second, -d);
     }
   }
-  cl::merge_over_ranks(tally_, lmp_->world, exchange_);
+  // global per pair this rank has, from the ranks within reach (contact_tally_mpi.h; 3 x the ghost
+  // cutoff + skin covers a body's extent, which the body fixes keep within the ghost cutoff, plus a
+  // contact and the drift of owned atoms), found again at every re-neighbouring
+  if (lmp_->comm->nprocs == 1) return;
+  Domain* d = lmp_->domain;
+  if (d->triclinic) {
+    cl::merge_over_ranks(tally_, lmp_->world, exchange_);
+    return;
+  }
+  if (!near_.known || lmp_->neighbor->ago == 0) {
+    const double* cg = lmp_->comm->cutghost;
+    const double reach = 3.0 * std::max(cg[0], std::max(cg[1], cg[2])) + lmp_->neighbor->skin;
+    const bool periodic[3] = {d->xperiodic != 0, d->yperiodic != 0, d->zperiodic != 0};
+    near_.find(lmp_->world, d->sublo, d->subhi, periodic, d->prd, reach);
+  }
+  cl::merge_with_neighbours(tally_, lmp_->world, near_, exchange_);
 }
 
 // 1/M + (r x n).I^-1 (r x n) of the body of atom a, 1/m of a free sphere

@@ -52,6 +52,7 @@ class ClumpCorrection : public tdem::liggghts::clump_link::Correction {
   std::vector<class FixWallGran*> walls_;                         // primitive wall/gran fixes
   std::vector<std::pair<const void*, std::int64_t>> wall_sides_;  // contact-model owner -> side id
   tdem::clumps::TallyExchange exchange_;                          // scratch of the MPI merge
+  tdem::clumps::TallyNeighbours near_;                            // the ranks it merges with
   std::vector<std::int64_t> side_;                                // per atom: its side this step
   std::int64_t side(int a) const;
   double inverse_mass(int a, const double* n) const;
