@@ -93,6 +93,15 @@ struct TallyNeighbours {
   std::vector<MPI_Request> requests;
   bool known = false;
 
+  // at the first call and after a re-neighbouring (collective): the neighbours of the host's
+  // sub-domain, reach = 3 x the largest ghost cutoff + skin (the body fixes keep the ghost cutoff at
+  // least a body's extent; the cutoff covers a contact; the skin the drift of owned atoms)
+  void refresh(MPI_Comm comm, bool reneighboured, const double lo[3], const double hi[3], const bool periodic[3],
+               const double prd[3], const double cutghost[3], double skin) {
+    if (known && !reneighboured) return;
+    find(comm, lo, hi, periodic, prd, 3.0 * std::max(cutghost[0], std::max(cutghost[1], cutghost[2])) + skin);
+  }
+
   // gathers the sub-domain boxes (collective) and keeps the ranks within reach
   void find(MPI_Comm comm, const double lo[3], const double hi[3], const bool periodic[3], const double prd[3],
             double reach) {

@@ -23,7 +23,6 @@
 #include "modify.h"
 #include "neighbor.h"
 
-#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <mpi.h>
@@ -84,22 +83,14 @@ struct ClumpCorrection {
   }
   tdem::clumps::TallyNeighbours near;  // the ranks whose entries this rank's pairs may need
   // the tally of this step, global for every pair this rank has: from the ranks within reach
-  // (contact_tally_mpi.h; the reach 3 x ghost cutoff + skin covers a body's extent, which the body
-  // fixes keep within the ghost cutoff, plus a contact and the drift of owned atoms), found again
-  // at every re-neighbouring; a triclinic box gathers from all ranks
+  // (contact_tally_mpi.h), found again at every re-neighbouring; a triclinic box gathers from all
   void merge(LAMMPS_NS::LAMMPS *lmp) {
     if (lmp->comm->nprocs == 1) return;
     LAMMPS_NS::Domain *d = lmp->domain;
-    if (d->triclinic) {
-      tdem::clumps::merge_over_ranks(tally, lmp->world, buf);
-      return;
-    }
-    if (!near.known || lmp->neighbor->ago == 0) {
-      const double *cg = lmp->comm->cutghost;
-      const double reach = 3.0 * std::max(cg[0], std::max(cg[1], cg[2])) + lmp->neighbor->skin;
-      const bool periodic[3] = {d->xperiodic != 0, d->yperiodic != 0, d->zperiodic != 0};
-      near.find(lmp->world, d->sublo, d->subhi, periodic, d->prd, reach);
-    }
+    if (d->triclinic) return tdem::clumps::merge_over_ranks(tally, lmp->world, buf);
+    const bool periodic[3] = {d->xperiodic != 0, d->yperiodic != 0, d->zperiodic != 0};
+    near.refresh(lmp->world, lmp->neighbor->ago == 0, d->sublo, d->subhi, periodic, d->prd, lmp->comm->cutghost,
+                 lmp->neighbor->skin);
     tdem::clumps::merge_with_neighbours(tally, lmp->world, near, buf);
   }
 };

@@ -47,7 +47,6 @@ Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|lo
 """
 import math
 import os
-import re
 import shutil
 import sys
 
@@ -55,6 +54,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
+import tally_report  # noqa: E402
 
 args = lc.parse_args(sys.argv)
 part = args.get("part", "all")
@@ -794,6 +794,19 @@ LOCAL = ROW.replace("create_box 1 box", "atom_modify map array\ncreate_box 1 box
     "variable fz equal fcm(all,z)", "variable fz equal vz[1]")
 
 
+def add_frozen_ball(wd, r, d, theta):
+    """Adds to body.data of write_row (a dimer tilted by theta) atom 3: a free sphere of radius 2r at z = 0
+    right below the lower sphere (frozen by the input)."""
+    x1 = -0.5 * d * math.cos(theta)
+    with open(os.path.join(wd, "body.data")) as f:
+        text = f.read()
+    text = text.replace("2 atoms", "3 atoms").replace(
+        "\n\nVelocities\n\n", "\n3 1 %.17g 2500 %.17g 0 0\n\nVelocities\n\n" % (4 * r, x1)).replace(
+        "\n\nMolecules\n\n", "\n3 0 0 0 0 0 0\n\nMolecules\n\n") + "3 0\n"
+    with open(os.path.join(wd, "body.data"), "w") as f:
+        f.write(text)
+
+
 def part_corr_local_mass():
     wd = lc.workdir("clump_corr_local")
     e, tc, r, d, v0, rho = 0.8, 1e-4, 0.002, 0.0045, 0.1, 2500.0
@@ -828,14 +841,7 @@ def part_corr_local_mass():
     # right below it (a frozen side adds 0 to the inverse mass, as a wall)
     for corr in ("none", "local_mass"):
         write_row(wd, 2, r, d, 3 * r + 1e-7, theta, v0)
-        x1 = -0.5 * d * math.cos(theta)
-        with open(os.path.join(wd, "body.data")) as f:
-            text = f.read()
-        text = text.replace("2 atoms", "3 atoms").replace(
-            "\n\nVelocities\n\n", "\n3 1 %.17g 2500 %.17g 0 0\n\nVelocities\n\n" % (4 * r, x1)).replace(
-            "\n\nMolecules\n\n", "\n3 0 0 0 0 0 0\n\nMolecules\n\n") + "3 0\n"
-        with open(os.path.join(wd, "body.data"), "w") as f:
-            f.write(text)
+        add_frozen_ball(wd, r, d, theta)
         inp = LOCAL.replace("fix c all", "group body molecule 1\ngroup ball id 3\nfix fr ball freeze\nfix c body")
         nsteps = int(1.5 * tc / dt)
         _, out = lc.run(TDEM, inp.format(e=e, tc=tc, corr="correction " + corr, wall="", dt=dt, more="", n=nsteps),
@@ -1079,15 +1085,8 @@ def part_corr_wide():
     worst = max(abs(x - e) / e for x in e_wall + e_pair)
     chk.check(worst <= 1e-3, "every wall body and every body pair leaves with the single-contact e (rel err %.2g "
               "<= 1e-3; without the correction N = 4 contacts give %.4f)" % (worst, closed_form_n(e, tc, n)[0]))
-    # (the ranks print concurrently: reports are found anywhere in the output)
-    rep = list(re.finditer(r"tdem tally: rank (\d+) of 8 merges with ranks \[([0-9,]*)\]", res[8][1]))
-    seen = {int(m.group(1)) for m in rep}
-    ok = seen == set(range(8))
-    for m in rep:
-        me = int(m.group(1))
-        ok = ok and sorted(int(x) for x in m.group(2).split(",") if x) == sorted({(me - 1) % 8, (me + 1) % 8})
-    chk.check(ok, "-np 8: each rank exchanges its tally with its two neighbouring slabs only (%d reports from ranks "
-              "%s, e.g. '%s')" % (len(rep), sorted(seen), rep[0].group(0) if rep else "none"))
+    ok, what = tally_report.slab_neighbours(res[8][1], 8)
+    chk.check(ok, "-np 8: each rank exchanges its tally with its two neighbouring slabs only (%s)" % what)
 
 
 # ----------------------------------------------------------------------------- 9. correction, stock bodies
@@ -1226,14 +1225,7 @@ def part_corr_stock_local():
               "(law e %.2f; m_loc closed form with the body mass %.6f)" % (corr, res[corr][0], res[corr][1], e, e_none))
         # the same through pair tdem/gran on a frozen sphere of radius 2r right below the lower sphere
         write_row(wd, 2, r, d, 3 * r + 1e-7, theta, v0)
-        x1 = -0.5 * d * math.cos(theta)
-        with open(os.path.join(wd, "body.data")) as f:
-            text = f.read()
-        text = text.replace("2 atoms", "3 atoms").replace(
-            "\n\nVelocities\n\n", "\n3 1 %.17g 2500 %.17g 0 0\n\nVelocities\n\n" % (4 * r, x1)).replace(
-            "\n\nMolecules\n\n", "\n3 0 0 0 0 0 0\n\nMolecules\n\n") + "3 0\n"
-        with open(os.path.join(wd, "body.data"), "w") as f:
-            f.write(text)
+        add_frozen_ball(wd, r, d, theta)
         inp = STOCK_LOCAL.replace("fix rb all", "group body molecule 1\ngroup ball id 3\nfix fr ball freeze\n"
                                                 "fix rb body")
         res["p" + corr] = impact("p" + corr, 3 * r, inp.format(e=e, tc=tc, corr=line, wall="", dt=dt, more="",

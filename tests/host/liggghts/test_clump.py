@@ -30,7 +30,6 @@ the code under test:
 """
 import math
 import os
-import re
 import shutil
 import sys
 
@@ -40,6 +39,7 @@ import tdem_lig as T
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 from clump_ref import hertz_wall_ode  # noqa: E402
+import tally_report  # noqa: E402
 
 HEAD = """atom_style hybrid sphere molecular
 atom_modify map array
@@ -856,15 +856,8 @@ def part_corrwide(args, checks):
     print("corrwide: e of the 7 rods %s (single-contact closed form %.6f)" % (np.array2string(np.array(es), precision=6),
                                                                           e_ref))
     checks.check(worst < 1e-3, "corrwide: every rod leaves with the single-contact e (%.1e < 1e-3)" % worst)
-    # (the ranks print concurrently: reports are found anywhere in the output)
-    rep = list(re.finditer(r"tdem tally: rank (\d+) of 8 merges with ranks \[([0-9,]*)\]", res[8][1]))
-    seen = {int(m.group(1)) for m in rep}
-    ok = seen == set(range(8))
-    for m in rep:
-        me = int(m.group(1))
-        ok = ok and sorted(int(x) for x in m.group(2).split(",") if x) == sorted({(me - 1) % 8, (me + 1) % 8})
-    checks.check(ok, "corrwide: -np 8: each rank exchanges its tally with its two neighbouring slabs only (%d reports "
-                 "from ranks %s, e.g. '%s')" % (len(rep), sorted(seen), rep[0].group(0) if rep else "none"))
+    ok, what = tally_report.slab_neighbours(res[8][1], 8)
+    checks.check(ok, "corrwide: -np 8: each rank exchanges its tally with its two neighbouring slabs only (%s)" % what)
 
 
 def part_corrpar(args, checks):

@@ -130,21 +130,14 @@ void ClumpCorrection::tally() {
       if (d <= 0.0) tally_.add(side_[i], wall_sides_[w].second, -d);
     }
   }
-  // global per pair this rank has, from the ranks within reach (contact_tally_mpi.h; 3 x the ghost
-  // cutoff + skin covers a body's extent, which the body fixes keep within the ghost cutoff, plus a
-  // contact and the drift of owned atoms), found again at every re-neighbouring
+  // global per pair this rank has, from the ranks within reach (contact_tally_mpi.h), found again at
+  // every re-neighbouring; a triclinic box gathers from all
   if (lmp_->comm->nprocs == 1) return;
   Domain* d = lmp_->domain;
-  if (d->triclinic) {
-    cl::merge_over_ranks(tally_, lmp_->world, exchange_);
-    return;
-  }
-  if (!near_.known || lmp_->neighbor->ago == 0) {
-    const double* cg = lmp_->comm->cutghost;
-    const double reach = 3.0 * std::max(cg[0], std::max(cg[1], cg[2])) + lmp_->neighbor->skin;
-    const bool periodic[3] = {d->xperiodic != 0, d->yperiodic != 0, d->zperiodic != 0};
-    near_.find(lmp_->world, d->sublo, d->subhi, periodic, d->prd, reach);
-  }
+  if (d->triclinic) return cl::merge_over_ranks(tally_, lmp_->world, exchange_);
+  const bool periodic[3] = {d->xperiodic != 0, d->yperiodic != 0, d->zperiodic != 0};
+  near_.refresh(lmp_->world, lmp_->neighbor->ago == 0, d->sublo, d->subhi, periodic, d->prd, lmp_->comm->cutghost,
+                lmp_->neighbor->skin);
   cl::merge_with_neighbours(tally_, lmp_->world, near_, exchange_);
 }
 
