@@ -194,6 +194,15 @@ int main(int argc, char **argv)
 {
   MPI_Init(&argc, &argv);
   MPI_Comm lammps_comm = MPI_COMM_WORLD;
+  // -h / -help: LAMMPS prints its compiled style lists and exits inside the constructor; tdem's
+  // styles follow them (an exit handler, rank 0)
+  int me = 0;
+  MPI_Comm_rank(lammps_comm, &me);
+  for (int i = 1; i < argc && me == 0; i++)
+    if (strcmp(argv[i], "-h") == 0 || strcmp(argv[i], "-help") == 0) {
+      atexit([] { fputs(tdem_lammps::style_listing().c_str(), stdout); });
+      break;
+    }
 
   // An ERROR throws LAMMPSException where liblammps was built with exceptions (always since
   // LAMMPS 2023); where it was not, Error::all ends the run itself and nothing is thrown.

@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem-liggghts: a drop-in for the `liggghts` executable (same command line: -in, -var, -log,
 // -echo, -screen, ...) with the tdem contact laws registered before the LAMMPS instance is
-// created. Everything else is what LIGGGHTS's own main program does.
+// created. Everything else is what LIGGGHTS's own main program does. With -h / -help, LIGGGHTS
+// prints its compiled style lists and exits inside the constructor; tdem's models and styles follow
+// them (an exit handler, rank 0).
 #include <mpi.h>
 
 #include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 
 #include "input.h"
@@ -25,6 +29,13 @@ int main(int argc, char** argv) {
 
   MPI_Init(&argc, &argv);
   tdem::liggghts::register_styles();
+  int me = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &me);
+  for (int i = 1; i < argc && me == 0; i++)
+    if (std::strcmp(argv[i], "-h") == 0 || std::strcmp(argv[i], "-help") == 0) {
+      std::atexit([] { std::fputs(tdem::liggghts::style_listing().c_str(), stdout); });
+      break;
+    }
 
   LAMMPS_NS::LAMMPS* lammps = new LAMMPS_NS::LAMMPS(argc, argv, MPI_COMM_WORLD);
   tdem::liggghts::attach(lammps);

@@ -4,11 +4,14 @@
 // friend function, which add_fix_style / add_compute_style call.
 #include "style_maps.h"
 
+#include "tdem_liggghts.h"
+
 #include "lammps.h"
 #include "modify.h"
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -32,13 +35,20 @@ template struct ExposeMember<ComputeMapTag, &LAMMPS_NS::Modify::compute_map>;
 namespace tdem {
 namespace liggghts {
 
+std::vector<std::string>& listed_styles() {
+  static std::vector<std::string> names;
+  return names;
+}
+
 void add_fix_style(LAMMPS_NS::LAMMPS* lmp, const char* name, FixCreator create) {
+  if (!lmp) listed_styles().push_back(std::string("fix ") + name);
   if (!lmp || !lmp->modify) return;
   auto* map = lmp->modify->*member_of(FixMapTag());
   if (map) (*map)[name] = create;
 }
 
 void add_compute_style(LAMMPS_NS::LAMMPS* lmp, const char* name, ComputeCreator create) {
+  if (!lmp) listed_styles().push_back(std::string("compute ") + name);
   if (!lmp || !lmp->modify) return;
   auto* map = lmp->modify->*member_of(ComputeMapTag());
   if (map) (*map)[name] = create;

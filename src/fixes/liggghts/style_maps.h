@@ -16,7 +16,8 @@ namespace liggghts {
 using FixCreator = LAMMPS_NS::Fix* (*)(LAMMPS_NS::LAMMPS*, int, char**);
 using ComputeCreator = LAMMPS_NS::Compute* (*)(LAMMPS_NS::LAMMPS*, int, int, char**);
 
-// Both do nothing for lmp == nullptr or an instance without Modify.
+// Both do nothing for an instance without Modify; lmp == nullptr only records "fix NAME" /
+// "compute NAME" in listed_styles() (tdem_liggghts.h; the -h listing collects the names so).
 void add_fix_style(LAMMPS_NS::LAMMPS* lmp, const char* name, FixCreator create);
 void add_compute_style(LAMMPS_NS::LAMMPS* lmp, const char* name, ComputeCreator create);
 

@@ -8,6 +8,7 @@
 #include "pair_tdem_gran.h"
 #include "version.h"
 
+#include <cstdio>
 #include <vector>
 
 using namespace LAMMPS_NS;
@@ -48,6 +49,30 @@ const StyleEntry *style_table()
     return v;
   }();
   return all.data();
+}
+
+std::string style_listing()
+{
+  std::string out = "\n* tdem styles (tdem-lammps adds them to the lists above; docs/lammps.md):\n";
+  const struct {
+    StyleKind kind;
+    const char *title;
+  } kinds[] = {{StyleKind::pair, "Pair"}, {StyleKind::fix, "Fix"}, {StyleKind::compute, "Compute"}};
+  for (const auto &k : kinds) {
+    std::string body, line;
+    for (const StyleEntry *e = style_table(); e->name; ++e)
+      if (e->kind == k.kind) {
+        char cell[32];
+        std::snprintf(cell, sizeof cell, "%-20s", e->name);
+        if (line.size() + 20 > 80) {
+          body += line + "\n";
+          line.clear();
+        }
+        line += cell;
+      }
+    out += std::string("\n* ") + k.title + " styles (tdem):\n" + body + line + "\n";
+  }
+  return out;
 }
 
 void register_styles(LAMMPS *lmp)

@@ -3,6 +3,8 @@
 // (direct insertion into the style maps) and by the plugin (lammpsplugin_init).
 #pragma once
 
+#include <string>
+
 namespace LAMMPS_NS {
 class LAMMPS;
 class Pair;
@@ -70,6 +72,10 @@ const StyleEntry *clump_styles();      // TDEM_LMP_MODULE_CLUMP    (src/fixes/cl
 
 // The table of all styles (core + enabled modules), terminated by an entry with name == nullptr.
 const StyleEntry *style_table();
+
+// The -h listing of the table: "* Pair styles (tdem):", "* Fix styles (tdem):", "* Compute styles
+// (tdem):" with the names, in LAMMPS's layout (LAMMPS's own help prints its compiled lists only).
+std::string style_listing();
 
 // Insert every style of the table into lmp->force->pair_map / modify->fix_map / compute_map.
 void register_styles(LAMMPS_NS::LAMMPS *lmp);

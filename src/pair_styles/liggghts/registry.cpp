@@ -222,6 +222,55 @@ void register_styles() {
   register_parts(std::make_integer_sequence<int, TDEM_LIGGGHTS_PARTS>());
 }
 
+std::string style_listing() {
+  std::vector<std::string>& fixes = listed_styles();
+  fixes.clear();
+  register_fixes(nullptr);  // with no instance: only the names are recorded
+#ifdef TDEM_LIG_MODULE_GRATE
+  register_grate(nullptr);
+#endif
+#ifdef TDEM_LIG_MODULE_MIXING
+  register_mixing(nullptr);
+#endif
+#ifdef TDEM_LIG_MODULE_TIMESTEP
+  register_timestep(nullptr);
+#endif
+#ifdef TDEM_LIG_MODULE_CLUMP
+  register_clump(nullptr);
+#endif
+  const Names& n = names();
+  // a titled block of names, wrapped at 80 columns as LIGGGHTS's own lists
+  auto block = [](const std::string& title, const std::vector<std::string>& items) {
+    std::string out = "\n* " + title + ":\n", line;
+    for (const std::string& s : items) {
+      if (!line.empty() && line.size() + s.size() + 2 > 80) {
+        out += line + "\n";
+        line.clear();
+      }
+      line += (line.empty() ? "" : "  ") + s;
+    }
+    return out + line + "\n";
+  };
+  auto tdem_of = [](const std::map<int, std::string>& m) {
+    std::vector<std::string> v;
+    for (const auto& kv : m)
+      if (kv.second.compare(0, 5, "tdem/") == 0) v.push_back(kv.second);
+    return v;
+  };
+  std::vector<std::string> f, c;
+  for (const std::string& s : fixes) {
+    if (s.compare(0, 4, "fix ") == 0) f.push_back(s.substr(4));
+    else c.push_back(s.substr(8));
+  }
+  fixes.clear();
+  return "\n* tdem: tdem-liggghts adds these to the lists above (docs/liggghts.md)\n" +
+         block("Contact models (tdem), pair_style gran / fix wall/gran model", tdem_of(n.normal)) +
+         block("Tangential models (tdem), tangential", tdem_of(n.tangential)) +
+         block("Surface models (tdem), surface", tdem_of(n.surface)) +
+         block("Rolling friction models (tdem), rolling_friction", tdem_of(n.rolling)) +
+         block("Fix styles (tdem)", f) + block("Compute styles (tdem)", c);
+}
+
 void attach(LAMMPS_NS::LAMMPS* lmp) {
   g_lmp = lmp;
   if (!lmp) return;

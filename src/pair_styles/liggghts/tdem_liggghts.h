@@ -2,6 +2,9 @@
 // tdem: entry points of the tdem LIGGGHTS styles.
 #pragma once
 
+#include <string>
+#include <vector>
+
 namespace LAMMPS_NS {
 class LAMMPS;
 }
@@ -20,6 +23,13 @@ void register_styles();
 // selector), and with nullptr before deleting the instance. Optional: without it, the tdem
 // models work and LIGGGHTS's generic messages are given.
 void attach(LAMMPS_NS::LAMMPS* lmp);
+
+// The -h listing of what tdem adds: the contact models by kind (pair_style gran / fix wall/gran
+// `model`, `tangential`, `surface`, `rolling_friction`) and the fix and compute styles.
+std::string style_listing();
+// "fix NAME" / "compute NAME" of every add_fix_style / add_compute_style with lmp == nullptr
+// (fixes/liggghts/style_maps.cpp)
+std::vector<std::string>& listed_styles();
 
 // Fix/compute styles of the optional modules (CMake options TDEM_LIGGGHTS_<MODULE>, default ON),
 // inserted into the instance's style maps by attach(); defined in src/fixes/<module>/liggghts/
