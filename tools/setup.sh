@@ -41,6 +41,7 @@ packages=(
   lammps liblammps-dev lammps-examples
   libopenmpi-dev openmpi-bin
   cmake g++ make
+  libvtk9-dev python3-vtk9
   googletest libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
   dpkg-dev xz-utils ca-certificates debian-archive-keyring

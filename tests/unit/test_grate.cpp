@@ -15,6 +15,7 @@
 #include "fixes/mixing/mixing.h"
 
 using namespace tdem::grate;
+using namespace tdem;
 namespace mx = tdem::grate::mixing;
 
 namespace {
@@ -434,50 +435,32 @@ TEST(GrateGeometry, MeshIsClosedAndOutward) {
     EXPECT_NEAR(vol[k], 8.0 * boxes[k].half.x * boxes[k].half.y * boxes[k].half.z, 1e-12) << k;
 }
 
-TEST(GrateGeometry, VtkPolydataIsConsistent) {
+TEST(GrateGeometry, BarsDatasetIsTheMeshWithBoxData) {
   const Grate g(base_params());
   const auto boxes = g.boxes(0.5);
-  std::ostringstream os;
-  write_vtk(os, boxes, 0.5);
-  std::istringstream in(os.str());
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, "# vtk DataFile Version 3.0");
-  std::getline(in, line);
-  std::getline(in, line);
-  EXPECT_EQ(line, "ASCII");
-  std::getline(in, line);
-  EXPECT_EQ(line, "DATASET POLYDATA");
-  std::string kw, type;
-  std::size_t np = 0, ntri = 0, nsize = 0;
-  in >> kw >> np >> type;
-  EXPECT_EQ(kw, "POINTS");
-  ASSERT_EQ(np, 8 * boxes.size());
-  std::vector<double> pts(3 * np);
-  for (double& v : pts) in >> v;
-  in >> kw >> ntri >> nsize;
-  EXPECT_EQ(kw, "POLYGONS");
-  ASSERT_EQ(ntri, 12 * boxes.size());
-  EXPECT_EQ(nsize, 4 * ntri);
-  for (std::size_t t = 0; t < ntri; ++t) {
-    int three, a, b, c;
-    in >> three >> a >> b >> c;
-    EXPECT_EQ(three, 3);
-    EXPECT_GE(std::min(a, std::min(b, c)), 0);
-    EXPECT_LT(static_cast<std::size_t>(std::max(a, std::max(b, c))), np);
+  const vtkio::Dataset d = bars_dataset(boxes, 0.5);
+  EXPECT_EQ(d.time, 0.5);
+  ASSERT_EQ(d.npoints(), 8 * boxes.size());
+  ASSERT_EQ(d.ncells(), 12 * boxes.size());
+  for (std::size_t c = 0; c < d.ncells(); ++c) {
+    EXPECT_EQ(d.offsets[c + 1] - d.offsets[c], 3);
+    EXPECT_EQ(d.types[c], vtkio::kTriangle);
   }
   // moving row 1: points of box 1 are the rest points shifted by the displacement
   const auto rest = g.boxes(0.0);
-  const Vec3 d = boxes[1].centre - rest[1].centre;
-  EXPECT_GT(norm(d), 0.01);
+  const Vec3 disp = boxes[1].centre - rest[1].centre;
+  EXPECT_GT(norm(disp), 0.01);
   const Mesh mr = box_mesh(rest);
-  for (int k = 8; k < 16; ++k) EXPECT_NEAR(pts[3 * k] - mr.points[k].x, d.x, 1e-8);
-  std::size_t ncell = 0;
-  in >> kw >> ncell;
-  EXPECT_EQ(kw, "CELL_DATA");
-  EXPECT_EQ(ncell, ntri);
-  EXPECT_NE(os.str().find("VECTORS velocity double"), std::string::npos);
-  EXPECT_NE(os.str().find("SCALARS group int 1"), std::string::npos);
+  for (int k = 8; k < 16; ++k) EXPECT_NEAR(d.points[3 * k] - mr.points[k].x, disp.x, 1e-8);
+  ASSERT_EQ(d.cell_data.size(), 4u);
+  EXPECT_EQ(d.cell_data[0].name, "box");
+  EXPECT_EQ(d.cell_data[3].name, "velocity");
+  for (std::size_t c = 0; c < d.ncells(); ++c) {
+    const int b = static_cast<int>(d.cell_data[0].ints[c]);
+    EXPECT_EQ(d.cell_data[1].ints[c], boxes[b].row);
+    EXPECT_EQ(d.cell_data[2].ints[c], boxes[b].group);
+    EXPECT_EQ(d.cell_data[3].real[3 * c], boxes[b].velocity.x);
+  }
 }
 
 // ------------------------------------------------------------------------------------ mixing

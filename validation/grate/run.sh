@@ -62,7 +62,7 @@ run_scene grate_forward_3d.in fwd3d -var tend "$tend" || exit 2
 run_scene grate_reverse_3d.in rev3d -var tend "$tend" || exit 2
 run_scene grate_forward_3d.in stop3d -var tend "$stop_t" -var stroke 0 -var npart "$stop_n" || exit 2
 run_scene grate_forward_3d.in stop3d_dt1 -var tend "$stop_t" -var stroke 0 -var npart "$stop_n" -var dt 1e-4 || exit 2
-echo "VTK files: $(ls "$work"/*.vtk | wc -l) (bars: <tag>_bars_<step>.vtk, particles: <tag>_atoms_<step>.vtk)"
+echo "VTK files: $(ls "$work"/*.vtp "$work"/*.vtk 2>/dev/null | wc -l) (bars: <tag>_bars_<step>.vtp with the series <tag>_bars.pvd, particles: <tag>_atoms_<step>.vtk)"
 
 # shellcheck disable=SC2086
 /usr/bin/python3 "$here/analyse.py" "$work" "$results" $opt

@@ -94,8 +94,9 @@ class BodyOutput {
     tot_version_ = set.version();
     return tot_;
   }
-  // the rows of the reported bodies of every rank, in molecule ID order
-  void gather_rows(const BodySet& set, MPI_Comm world) {
+ public:
+  // the rows of the reported bodies of this rank (array layout, unsorted)
+  static std::vector<double> local_rows(const BodySet& set) {
     const Body& body_ = set.body();
     std::vector<double> mine;
     for (std::size_t b = 0; b < set.local_size(); b++) {
@@ -106,15 +107,43 @@ class BodyOutput {
                                          s.v[2], s.q.w, s.q.x, s.q.y, s.q.z, s.L[0], s.L[1], s.L[2], w[0], w[1], w[2]};
       mine.insert(mine.end(), row, row + kArrayColumns);
     }
-    const std::vector<double> all = allgather_rows(world, mine);
+    return mine;
+  }
+  // rows sorted by molecule ID
+  static std::vector<double> sorted_rows(const std::vector<double>& all) {
     const std::size_t n = all.size() / kArrayColumns;
     std::vector<std::size_t> order(n);
     for (std::size_t r = 0; r < n; r++) order[r] = r;
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return all[a * kArrayColumns] < all[b * kArrayColumns]; });
-    rows_.resize(n * kArrayColumns);
+    std::vector<double> out(n * kArrayColumns);
     for (std::size_t r = 0; r < n; r++)
-      std::copy(&all[order[r] * kArrayColumns], &all[order[r] * kArrayColumns] + kArrayColumns, &rows_[r * kArrayColumns]);
+      std::copy(&all[order[r] * kArrayColumns], &all[order[r] * kArrayColumns] + kArrayColumns, &out[r * kArrayColumns]);
+    return out;
+  }
+  // the rows of every rank on rank 0 only (empty elsewhere), in molecule ID order: one MPI_Gatherv
+  static std::vector<double> rows_on_root(const BodySet& set, MPI_Comm world) {
+    int me = 0, nprocs = 1;
+    MPI_Comm_rank(world, &me);
+    MPI_Comm_size(world, &nprocs);
+    const std::vector<double> mine = local_rows(set);
+    int nme = static_cast<int>(mine.size());
+    std::vector<int> counts(me == 0 ? nprocs : 1), displs(me == 0 ? nprocs : 1);
+    MPI_Gather(&nme, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, world);
+    int ntot = 0;
+    if (me == 0)
+      for (int p = 0; p < nprocs; p++) displs[p] = ntot, ntot += counts[p];
+    std::vector<double> all(ntot > 0 ? ntot : 1);
+    MPI_Gatherv(const_cast<double*>(mine.data()), nme, MPI_DOUBLE, all.data(), counts.data(), displs.data(),
+                MPI_DOUBLE, 0, world);
+    all.resize(ntot);
+    return me == 0 ? sorted_rows(all) : std::vector<double>();
+  }
+
+ private:
+  // the rows of the reported bodies of every rank, in molecule ID order
+  void gather_rows(const BodySet& set, MPI_Comm world) {
+    rows_ = sorted_rows(allgather_rows(world, local_rows(set)));
     rows_version_ = set.version();
   }
 };

@@ -24,7 +24,7 @@ inline const char* clump_syntax() {
   return "fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO] "
          "[integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson] "
          "[insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule] "
-         "[correction none|count|overlap|local_mass]";
+         "[correction none|count|overlap|local_mass] [vtk N prefix]";
 }
 
 struct ClumpArgs {
@@ -41,6 +41,8 @@ struct ClumpArgs {
   double insert_vel[3] = {0.0, 0.0, 0.0};
   bool bodies_molecule = false;      // bodies molecule (implied without insert)
   Correction correction = Correction::none;
+  int vtk_every = 0;                 // vtk N prefix: bodies as prefix_STEP.vtu every N steps, prefix.pvd
+  std::string vtk_prefix;
 };
 
 // a[0..] are the words after "fix ID group tdem/clump"; ntypes bounds `insert type`.
@@ -158,10 +160,15 @@ inline ClumpArgs parse_clump_args(const std::vector<std::string>& a, const std::
         unknown(key, v, "none, count, overlap, local_mass");
       c.correction = correction_from_string(v);
       iarg += 2;
+    } else if (key == "vtk") {
+      need(iarg, 2, key, "N prefix (steps between VTK files, file prefix)");
+      c.vtk_every = static_cast<int>(integer(a[iarg + 1], key, 1, 2147483647LL));
+      c.vtk_prefix = a[iarg + 2];
+      iarg += 3;
     } else {
       fail("unknown keyword '" + key +
            "'; allowed: template, file, shape, density, integration, resolution, rotation, insert, bodies, "
-           "correction; syntax: " + syntax);
+           "correction, vtk; syntax: " + syntax);
     }
   }
   if (c.name.empty()) fail("missing keyword 'template NAME'; syntax: " + syntax);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem: geometry of a stepped grate of fixed and moving bar rows (physics_reference.md 7.1,
 // docs/grate.md), host-independent. The host fixes ask for the bars as oriented boxes (or as a
-// triangle mesh) at a time t and write them as legacy-VTK polydata.
+// triangle mesh) at a time t, and as a VTK dataset (fixes/vtk/dataset.h).
 //
 // Coordinate convention. The grate is built in a local frame (x, w, u):
 //   x  horizontal transport direction (the bed moves towards +x, the grate descends towards +x),
@@ -44,6 +44,7 @@
 #include <vector>
 
 #include "fixes/grate/kinematics.h"
+#include "fixes/vtk/dataset.h"
 
 namespace tdem {
 namespace grate {
@@ -199,36 +200,23 @@ inline std::vector<bool> shared_faces(const Mesh& m) {
   return shared;
 }
 
-// Legacy-VTK polydata (ASCII) of the boxes: triangles with cell data box, row, group
-// (-1 fixed bar, -2 side wall) and velocity.
-inline void write_vtk(std::ostream& os, const std::vector<Box>& boxes, double t) {
+// The boxes as a VTK dataset (fixes/vtk): the triangles of box_mesh with cell data box, row,
+// group (-1 fixed bar, -2 side wall) and velocity, at time t.
+inline vtkio::Dataset bars_dataset(const std::vector<Box>& boxes, double t) {
   const Mesh m = box_mesh(boxes);
-  std::ostringstream s;
-  s.precision(17);
-  s << "# vtk DataFile Version 3.0\n";
-  s << "tdem grate bars, time " << t << "\n";
-  s << "ASCII\nDATASET POLYDATA\n";
-  s << "POINTS " << m.points.size() << " double\n";
-  for (const Vec3& p : m.points) s << p.x << " " << p.y << " " << p.z << "\n";
-  s << "POLYGONS " << m.triangles.size() << " " << 4 * m.triangles.size() << "\n";
-  for (const auto& tr : m.triangles) s << "3 " << tr[0] << " " << tr[1] << " " << tr[2] << "\n";
-  s << "CELL_DATA " << m.triangles.size() << "\n";
-  s << "SCALARS box int 1\nLOOKUP_TABLE default\n";
-  for (int b : m.triangle_box) s << b << "\n";
-  s << "SCALARS row int 1\nLOOKUP_TABLE default\n";
-  for (int b : m.triangle_box) s << boxes[b].row << "\n";
-  s << "SCALARS group int 1\nLOOKUP_TABLE default\n";
-  for (int b : m.triangle_box) s << boxes[b].group << "\n";
-  s << "VECTORS velocity double\n";
-  for (int b : m.triangle_box) s << boxes[b].velocity.x << " " << boxes[b].velocity.y << " " << boxes[b].velocity.z << "\n";
-  os << s.str();
-}
-
-inline void write_vtk_file(const std::string& path, const std::vector<Box>& boxes, double t) {
-  std::ofstream f(path);
-  if (!f) throw std::runtime_error("grate: cannot open VTK file '" + path + "' for writing");
-  write_vtk(f, boxes, t);
-  if (!f) throw std::runtime_error("grate: writing VTK file '" + path + "' failed");
+  vtkio::Dataset d;
+  d.time = t;
+  for (const Vec3& p : m.points) d.add_point(p.x, p.y, p.z);
+  for (const auto& tr : m.triangles) d.add_cell(tr.begin(), tr.end(), vtkio::kTriangle);
+  vtkio::Array &box = d.cell_array("box", 1, true), &row = d.cell_array("row", 1, true),
+             &group = d.cell_array("group", 1, true), &vel = d.cell_array("velocity", 3, false);
+  for (int b : m.triangle_box) {
+    box.ints.push_back(b);
+    row.ints.push_back(boxes[b].row);
+    group.ints.push_back(boxes[b].group);
+    vel.real.insert(vel.real.end(), {boxes[b].velocity.x, boxes[b].velocity.y, boxes[b].velocity.z});
+  }
+  return d;
 }
 
 class Grate {

@@ -36,7 +36,7 @@ function(tdem_lammps_build suffix header_dir library stock_lmp main)
   # (SLP does not reassociate, so results are bitwise the same either way.)
   target_compile_options(${_hdr} INTERFACE $<$<CXX_COMPILER_ID:GNU>:-fno-tree-slp-vectorize>
                                            $<$<CXX_COMPILER_ID:Clang>:-fno-slp-vectorize>)
-  target_link_libraries(${_hdr} INTERFACE tdem_core MPI::MPI_CXX)
+  target_link_libraries(${_hdr} INTERFACE tdem_core tdem_vtk MPI::MPI_CXX)
 
   set(_drv ${PROJECT_SOURCE_DIR}/src/drivers/lammps)
   if(main)

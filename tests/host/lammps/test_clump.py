@@ -41,6 +41,13 @@ Multiple-contact correction (fix tdem/clump ... correction none|count|overlap|lo
                    every boundary, -np 8 = -np 1 bitwise, single-contact e, two neighbours per rank
   corr_stock_local local_mass with rigid/small bodies: the tilted dimer of corr_local_mass (wall and
                    pair), the law's e and t_c at the contact point; -np 2 with the body split equals -np 1
+  vtk              `vtk N prefix`: the bodies of a tetra pour as .vtu files and a .pvd series, read back
+                   with the VTK library (python3-vtk9): every N steps at t = step*dt; the cells equal
+                   the fix's array at the same steps (id, centre, orientation, velocity, angular
+                   momentum, omega: bitwise); the points are the dumped spheres (unwrapped) with the
+                   template radius, 4 per body, edge 0.003 and centroid = centre; -np 2 writes the same
+                   files as -np 1; a run continued from a restart file extends the series, with the
+                   times of the uninterrupted run
   corr_mpi         pour of tetra clumps with 'overlap', 'count' and 'local_mass': -np 2 equals -np 1;
                    newton on equals newton off (pairs with a ghost partner counted once); restart
                    with 'overlap' continues identically; correction none is bitwise the default
@@ -54,6 +61,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 import tally_report  # noqa: E402
 
 args = lc.parse_args(sys.argv)
@@ -403,6 +411,109 @@ def part_mpi():
     chk.check(fell < 0.05, "the clumps fell (highest sphere at %.4f m)" % fell)
 
 
+def part_vtk():
+    import vtk_read as vr
+    every, nsteps, dt = 500, 2000, 5e-6
+    # the fix's array (variable length: not for fix ave/time) as thermo columns, 40 bodies x 17
+    cols = " ".join("f_c[%d][%d]" % (i, j) for i in range(1, 41) for j in range(1, 18))
+    out = "thermo_style custom step %s\nthermo_modify format float %%.17g\nthermo %d\n" % (cols, every)
+    text = POUR.replace("vel 0 0 -1\n", "vel 0 0 -1 vtk %d out/bodies\n" % every) + out
+    res = {}
+    for np_ in (1, 2):
+        wd = lc.workdir("clump_vtk_np%d" % np_)
+        os.makedirs(os.path.join(wd, "out"), exist_ok=True)
+        _, o = lc.run(TDEM, text + "run %d\n" % nsteps + DUMP.format(out="d.end"), wd, "in.vtk", np_=np_,
+                      mpirun=MPIRUN)
+        series = vr.read_pvd(os.path.join(wd, "out", "bodies.pvd"))
+        res[np_] = (wd, series, o)
+    wd, series, o1 = res[1]
+    steps = list(range(0, nsteps + 1, every))
+    chk.check([os.path.basename(f) for _, f in series] == ["bodies_%d.vtu" % k for k in steps] and
+              all(abs(t - k * dt) <= 1e-18 for (t, _), k in zip(series, steps)),
+              "bodies.pvd lists %d files, every %d steps, at t = step*dt" % (len(series), every))
+    # the fix's array at the same steps
+    blocks = {}
+    for r in lc.thermo_blocks(o1)[1:]:
+        w = r.split()
+        blocks[int(w[0])] = np.array([float(v) for v in w[1:]]).reshape(40, 17)
+    worst_cell = 0.0
+    names = [("id", [0]), ("centre", [1, 2, 3]), ("velocity", [4, 5, 6]), ("orientation", [7, 8, 9, 10]),
+             ("angular_momentum", [11, 12, 13]), ("omega", [14, 15, 16])]
+    compared = 0
+    for (t, f), k in zip(series, steps):
+        d = vr.read_dataset(f)
+        chk.check(d["time"] == k * dt if k else d["time"] == 0.0, "step %d: TimeValue %.17g = step*dt" % (k, d["time"]))
+        if k in blocks:
+            a = blocks[k]
+            for name, js in names:
+                v = d["cell"][name].reshape(len(a), -1)
+                worst_cell = max(worst_cell, float(np.abs(v - a[:, js]).max()))
+            compared += 1
+    chk.check(compared == len(steps) and worst_cell == 0.0,
+              "the cells equal the fix's array at %d steps: max difference %.3g" % (compared, worst_cell))
+    # the last file against the dumped spheres (periodic x, y: unwrapped by the minimum image)
+    d = vr.read_dataset(series[-1][1])
+    cols_, a = lc.read_dump(os.path.join(wd, "d.end"))
+    x = d["points"]
+    chk.check(len(d["cells"]) == 40 and all(len(c) == 4 for c in d["cells"]) and set(d["types"]) == {2},
+              "40 poly-vertex cells of 4 points (%d cells)" % len(d["cells"]))
+    chk.check(np.all(d["point"]["radius"] == 0.002), "point radius = template radius 0.002")
+    worst_p = edge = cen = 0.0
+    for c, mol in zip(d["cells"], d["cell"]["id"]):
+        p = x[c]
+        chk_mol = np.all(d["point"]["body"][c] == mol)
+        if not chk_mol:
+            chk.check(False, "body %d: point data 'body' names the cell's id" % mol)
+        s = a[a[:, 1] == mol][:, 2:5]
+        for q in p:
+            dd = s - q
+            dd[:, :2] -= 0.025 * np.round(dd[:, :2] / 0.025)
+            worst_p = max(worst_p, float(np.min(np.linalg.norm(dd, axis=1))))
+        for i in range(4):
+            for j in range(i + 1, 4):
+                edge = max(edge, abs(np.linalg.norm(p[i] - p[j]) - 0.003))
+        cen = max(cen, float(np.abs(p.mean(axis=0) - d["cell"]["centre"][list(d["cell"]["id"]).index(mol)]).max()))
+    print("last file: points vs dumped spheres %.3g m, edge error %.3g m, centroid vs centre %.3g m"
+          % (worst_p, edge, cen))
+    chk.check(worst_p <= 1e-15, "every point is a dumped sphere centre (%.3g m)" % worst_p)
+    chk.check(edge <= 1e-15 and cen <= 1e-15, "rigid tetra of edge 0.003 around its centre")
+    # -np 2 writes the same files
+    s2 = res[2][1]
+    same = len(s2) == len(series)
+    for (t1, f1), (t2, f2) in zip(series, s2):
+        d1, d2 = vr.read_dataset(f1), vr.read_dataset(f2)
+        same = same and t1 == t2 and np.array_equal(d1["points"], d2["points"])
+        for name, _ in names:
+            same = same and np.array_equal(d1["cell"][name], d2["cell"][name])
+    chk.check(same, "-np 2 writes the same %d files as -np 1 (bitwise)" % len(s2))
+    # restart: run 1000 + write_restart, then read_restart + run 1000 in the same directory; the
+    # reference is the writing process continuing after write_restart (as part restart)
+    wd = lc.workdir("clump_vtk_restart")
+    ref = lc.workdir("clump_vtk_restart_ref")
+    for w in (wd, ref):
+        os.makedirs(os.path.join(w, "out"), exist_ok=True)
+    lc.run(TDEM, text + "run 1000\nwrite_restart pour.restart\n", wd, "in.a")
+    lc.run(TDEM, text + "run 1000\nwrite_restart pour.restart\nrun 1000\n", ref, "in.a")
+    series = vr.read_pvd(os.path.join(ref, "out", "bodies.pvd"))
+    rtext = POUR_RESTART.replace("vel 0 0 -1\n", "vel 0 0 -1 vtk %d out/bodies\n" % every).format(m=1000, out="d.r")
+    lc.run(TDEM, rtext, wd, "in.b")
+    s3 = vr.read_pvd(os.path.join(wd, "out", "bodies.pvd"))
+    ok = [os.path.basename(f) for _, f in s3] == ["bodies_%d.vtu" % k for k in steps]
+    worst = 0.0
+    for (t1, f1), (t3, f3) in zip(series, s3):
+        d1, d3 = vr.read_dataset(f1), vr.read_dataset(f3)
+        ok = ok and d3["time"] == t3
+        worst = max(worst, lc.rel_diff(d3["cell"]["centre"], d1["cell"]["centre"])[1])
+    # not bitwise: read_restart rebuilds the neighbour lists (part restart: 1e-10)
+    chk.check(ok and worst <= 1e-10, "after read_restart the series continues: %d files, centres equal to the "
+              "writing process's continued run to %.3g" % (len(s3), worst))
+    # the fix keeps its own clock in the restart record: LAMMPS before 2022-05 (Debian 12's) restarts
+    # its clock at 0 after read_restart (LAMMPS issue 3096)
+    print("series after the restart: times %s" % [t for t, _ in s3])
+    chk.check(all(abs(a - b) <= 1e-15 * b for (a, _), (b, _) in zip(s3, series)),
+              "the times of the continued series are the uninterrupted run's")
+
+
 def part_restart():
     wd = lc.workdir("clump_restart")
     # The reference is the process that wrote the restart file and went on: `run 6000; write_restart;
@@ -602,6 +713,12 @@ def part_bad_input():
          "keyword 'correction' needs a value (none, count, overlap, local_mass)"),
         ("fix c all tdem/clump template s shape single 0.002 0 density 2500\nfix n all nve/sphere", PM,
          "also integrates clump spheres"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 vtk 0 b", PM,
+         "'vtk': value '0' is not an integer in [1, 2147483647]"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 vtk 10", PM,
+         "keyword 'vtk' needs N prefix"),
+        ("fix c all tdem/clump template s shape single 0.002 0 density 2500 vtk 10 /nonexistent-dir/b", PM,
+         "cannot write the VTK file '/nonexistent-dir/b_0.vtu': the directory '/nonexistent-dir' does not exist"),
     ]
     for fix, pm, expect in cases:
         rc, out = lc.run(TDEM, BAD_BASE.format(pm=pm, fix=fix, setmol="set group all mol 1" if pm else ""), wd, "in.bad", check=False, timeout=120)
@@ -1255,7 +1372,7 @@ def part_corr_stock_local():
               "%.2g (<= 1e-12), contact-point e %.6f" % (worst, runs[1][0]))
 
 
-PARTS = {"nve_single": part_nve_single, "free_body": part_free_body, "flat_impact": part_flat_impact,
+PARTS = {"vtk": part_vtk, "nve_single": part_nve_single, "free_body": part_free_body, "flat_impact": part_flat_impact,
          "mpi": part_mpi, "restart": part_restart, "insert": part_insert, "bad_input": part_bad_input,
          "corr_flat": part_corr_flat, "corr_continuity": part_corr_continuity,
          "corr_local_mass": part_corr_local_mass, "corr_mpi": part_corr_mpi,

@@ -6,8 +6,9 @@ kinematics  Bar geometry and motion vs an independent Python model of docs/grate
             re-implemented here from the formulas, not from the C++): every VTK file written by
             `vtk N prefix` (at set-up and every N steps) is read back and the 8 corners of every
             box (bars and side walls) and its velocity are compared with the model at t = step*dt.
-            Tolerance: 1e-12 relative, or the precision of the VTK file if coarser (10^(1-digits),
-            digits = significant digits the writer uses; 17 since geometry.h writes full precision). The displacement u and velocity of every phase group, output
+            The files are VTK XML polydata (.vtp, binary doubles) read with the VTK library
+            (python3-vtk9, tests/host/vtk_read.py); tolerance 1e-12 relative. The series bars.pvd
+            lists every file at t = step*dt, as does the TimeValue of each file. The displacement u and velocity of every phase group, output
             as f_ID[4..] with %.17g, must match the model to 1e-12 (relative to the stroke and to
             the largest speed). Cases: reverse-acting, declined, stepped, roof-tile overlap, bars
             with lateral gaps, side walls, trapezoidal profile with dwells, forward share 0.4, two
@@ -57,6 +58,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import lmp_common as lc  # noqa: E402
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import vtk_read as vr  # noqa: E402
 
 args = lc.parse_args(sys.argv)
 PART = args.get("part", "kinematics")
@@ -177,22 +180,10 @@ def corners(box):
                      for cc in range(8)])
 
 
-def read_vtk(path):
-    """points, number of significant digits, per-triangle box index and velocity."""
-    with open(path) as f:
-        lines = f.read().splitlines()
-    k = next(i for i, l in enumerate(lines) if l.startswith("POINTS"))
-    n = int(lines[k].split()[1])
-    toks = [w for l in lines[k + 1:k + 1 + n] for w in l.split()]
-    pts = np.array([float(w) for w in toks]).reshape(n, 3)
-    digits = max(len(re.sub(r"[^0-9]", "", w.split("e")[0]).lstrip("0")) for w in toks)
-    k = next(i for i, l in enumerate(lines) if l.startswith("POLYGONS"))
-    ntri = int(lines[k].split()[1])
-    k = next(i for i, l in enumerate(lines) if l.startswith("SCALARS box"))
-    box = np.array([int(l) for l in lines[k + 2:k + 2 + ntri]])
-    k = next(i for i, l in enumerate(lines) if l.startswith("VECTORS velocity"))
-    vel = np.array([[float(w) for w in l.split()] for l in lines[k + 1:k + 1 + ntri]])
-    return pts, digits, box, vel
+def read_vtp(path):
+    """points, per-triangle box index and velocity, and the time of a .vtp (read with VTK)."""
+    d = vr.read_dataset(path)
+    return d["points"], d["cell"]["box"].astype(int), d["cell"]["velocity"], d["time"]
 
 
 def grate_args(g, m):
@@ -254,14 +245,20 @@ def part_kinematics():
         text += "thermo_style custom step %s\nthermo_modify format float %%.17g\nthermo 1\nrun 400\n" % " ".join(
             "f_gr[%d]" % (4 + k) for k in range(2 * ng))
         _, out = lc.run(args["tdem"], text, wd, "in.kin")
-        files = sorted(glob.glob(os.path.join(wd, "bars_*.vtk")))
-        steps = sorted(int(re.search(r"_(\d+)\.vtk$", f).group(1)) for f in files)
+        files = sorted(glob.glob(os.path.join(wd, "bars_*.vtp")))
+        steps = sorted(int(re.search(r"_(\d+)\.vtp$", f).group(1)) for f in files)
         chk.check(steps == list(range(0, 401, every)),
                   "%s: VTK files at set-up and every %d steps (%d files)" % (name, every, len(steps)))
-        worst_p = worst_v = 0.0
-        tol_p = 0.0
+        # the series lists every file once, in step order, at its time step*dt
+        series = vr.read_pvd(os.path.join(wd, "bars.pvd"))
+        chk.check([os.path.basename(f) for _, f in series] == ["bars_%d.vtp" % k for k in steps] and
+                  all(abs(t - k * dt) <= 1e-15 for (t, _), k in zip(series, steps)),
+                  "%s: bars.pvd lists the %d files at t = step*dt" % (name, len(series)))
+        worst_p = worst_v = worst_t = 0.0
+        tol_p = 1e-12  # binary doubles: round-off of the geometry only
         for step in steps:
-            pts, digits, tbox, tvel = read_vtk(os.path.join(wd, "bars_%d.vtk" % step))
+            pts, tbox, tvel, tfile = read_vtp(os.path.join(wd, "bars_%d.vtp" % step))
+            worst_t = max(worst_t, abs(tfile - step * dt))
             boxes = model.boxes(step * dt)
             ref = np.vstack([corners(b) for b in boxes])
             if pts.shape != ref.shape:
@@ -269,12 +266,12 @@ def part_kinematics():
                 break
             scale = max(1.0, np.abs(ref).max())
             worst_p = max(worst_p, np.abs(pts - ref).max() / scale)
-            tol_p = max(10.0 ** (1 - digits), 1e-12)  # the file's precision, at best 1e-12 (round-off)
             vref = np.array([boxes[b][3] for b in tbox])
             vs = max(np.abs(vref).max(), 1e-30)
             worst_v = max(worst_v, np.abs(tvel - vref).max() / vs if np.abs(vref).max() > 0 else np.abs(tvel).max())
-        print("%s: corners max rel. difference %.3g (VTK written with %d digits: tolerance %.1g), "
-              "velocities %.3g" % (name, worst_p, digits, tol_p, worst_v))
+        print("%s: corners max rel. difference %.3g (tolerance %.1g), velocities %.3g, TimeValue %.3g"
+              % (name, worst_p, tol_p, worst_v, worst_t))
+        chk.check(worst_t <= 1e-15, "%s: the TimeValue of every file is step*dt" % name)
         chk.check(worst_p <= tol_p, "%s: bar corners equal the model at all %d VTK steps" % (name, len(steps)))
         chk.check(worst_v <= tol_p, "%s: bar velocities equal the model" % name)
         # u, v of every phase group at every step, full precision
@@ -653,10 +650,10 @@ def part_scene():
     rows = [r.split() for r in lc.thermo_blocks(out)]
     hdr = rows[0]
     last = dict(zip(hdr, rows[-1]))
-    vtk = sorted(os.path.basename(f) for f in glob.glob(os.path.join(wd, "grate_bars_*.vtk")))
+    vtk = sorted(os.path.basename(f) for f in glob.glob(os.path.join(wd, "grate_bars_*.vtp")))
     print("scene: %s atoms at step %s, force on the bars (%s, %s) N; VTK files %s"
           % (last["Atoms"], last["Step"], last["f_grate[1]"], last["f_grate[3]"], vtk))
-    chk.check(vtk == ["grate_bars_0.vtk", "grate_bars_2000.vtk"], "scene: VTK of the bars at set-up and step 2000")
+    chk.check(vtk == ["grate_bars_0.vtp", "grate_bars_2000.vtp"], "scene: VTK of the bars at set-up and step 2000")
     chk.check(os.path.exists(os.path.join(wd, "grate_bed.dump")), "scene: particle dump written")
     chk.check(int(last["Atoms"]) > 600 and float(last["f_grate[3]"]) < 0, "scene: the bed lies on the grate")
 

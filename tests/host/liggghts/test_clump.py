@@ -2,6 +2,9 @@
 """fix tdem/clump in LIGGGHTS (issue 6): rigid multi-sphere clumps. Expected values are independent of
 the code under test:
 
+ vtk         `vtk N prefix`: the bodies of the tetra pour as .vtu files in a .pvd series, read back with the
+             VTK library: every N steps at t = step*dt, cells equal to the fix's array (bitwise), points =
+             the dumped spheres with the template radius, -np 2 = -np 1 bitwise, continued after a restart.
  nve         one-sphere clumps (bodies from molecules) in a scene with sphere-sphere and wall contacts
              (stock hertz + history, gravity) against the stock fix nve/sphere in the same scene over
              1000 steps: positions and velocities to round-off (1e-10 relative).
@@ -494,6 +497,10 @@ def part_bad(args, checks):
          ["neigh_modify exclude molecule"]),
         ("correction", "fix c all tdem/clump template t shape dimer 0.002 0.01 density 1 correction many",
          ["'correction'", "'many'", "none, count, overlap, local_mass"]),
+        ("vtk", "fix c all tdem/clump template t shape dimer 0.002 0.01 density 1 vtk 0 b",
+         ["'vtk'", "'0'", "[1, 2147483647]"]),
+        ("vtkdir", "neigh_modify exclude molecule all\nfix c all tdem/clump template t shape dimer 0.002 0.01 density 1 "
+         "vtk 10 /nonexistent-dir/b\nrun 1", ["/nonexistent-dir/b_0.vtu", "does not exist"]),
         ("twice", "neigh_modify exclude molecule all\nfix c all tdem/clump template t shape dimer 0.002 0.01 density 1"
          "\nfix n all nve/sphere\nrun 1", ["fix n (nve/sphere) also integrates clump spheres"]),
     ]
@@ -1065,11 +1072,84 @@ def part_ranks(args, checks):
 CORR_NPOUR = 10000
 
 
+def part_vtk(args, checks):
+    """`vtk N prefix`: .vtu files and the .pvd series of the bodies, read back with the VTK library."""
+    import vtk_read as vr
+    every, n, dt = 500, 2000, 5e-6
+    cols = " ".join("f_c[%d][%d]" % (i, j) for i in range(1, 41) for j in range(1, 18))
+
+    def scene(steps, **kw):
+        t = pour_scene(steps, **kw).replace("vel 0 0 -0.5", "vel 0 0 -0.5 vtk %d out/bodies" % every)
+        return t.replace("thermo 1000", "thermo_style custom step %s\nthermo_modify format float %%.17g\n"
+                                        "thermo %d" % (cols, every))
+    res = {}
+    for np_ in (1, 2):
+        d = T.workdir(args, "tdem_lig_clump_vtk%d" % np_)
+        os.makedirs(os.path.join(d, "out"))
+        r = T.run(args.tdem, ("processors 2 1 1\n" if np_ == 2 else "") + scene(n), d, "pour", np_=np_,
+                  mpirun=args.mpirun)
+        res[np_] = (d, vr.read_pvd(os.path.join(d, "out", "bodies.pvd")), r.stdout)
+    d, series, out = res[1]
+    steps = list(range(0, n + 1, every))
+    checks.check([os.path.basename(f) for _, f in series] == ["bodies_%d.vtu" % k for k in steps] and
+                 all(abs(t - k * dt) <= 1e-18 for (t, _), k in zip(series, steps)),
+                 "vtk: bodies.pvd lists %d files, every %d steps, at t = step*dt" % (len(series), every))
+    blocks = {}
+    for header, rows in T.thermo_blocks(out):
+        for r in rows:
+            w = r.split()
+            blocks[int(w[0])] = np.array([float(v) for v in w[1:]]).reshape(40, 17)
+    names = [("id", [0]), ("centre", [1, 2, 3]), ("velocity", [4, 5, 6]), ("orientation", [7, 8, 9, 10]),
+             ("angular_momentum", [11, 12, 13]), ("omega", [14, 15, 16])]
+    worst, compared = 0.0, 0
+    for (t, f), k in zip(series, steps):
+        ds = vr.read_dataset(f)
+        checks.check(ds["time"] == t, "vtk: step %d: TimeValue %.17g is the series' time" % (k, ds["time"]))
+        if k in blocks:
+            for name, js in names:
+                worst = max(worst, float(np.abs(ds["cell"][name].reshape(40, -1) - blocks[k][:, js]).max()))
+            compared += 1
+    checks.check(compared == len(steps) and worst == 0.0,
+                 "vtk: the cells equal the fix's array at %d steps (max difference %.3g)" % (compared, worst))
+    ds = vr.read_dataset(series[-1][1])
+    step, _, a = last_frame(d)
+    worst_p = edge = 0.0
+    for c, mol in zip(ds["cells"], ds["cell"]["id"]):
+        p = ds["points"][c]
+        s = a[a[:, 1] == mol][:, 2:5]
+        worst_p = max(worst_p, max(float(np.min(np.linalg.norm(s - q, axis=1))) for q in p))
+        edge = max(edge, max(abs(np.linalg.norm(p[i] - p[j]) - 0.0045) for i in range(4) for j in range(i + 1, 4)))
+    print("vtk: last file (step %d): points vs dumped spheres %.3g m, tetra edge error %.3g m" % (step, worst_p, edge))
+    checks.check(step == n and len(ds["cells"]) == 40 and set(ds["types"]) == {2} and
+                 np.all(ds["point"]["radius"] == 0.003), "vtk: 40 poly-vertex cells of 4 spheres of radius 0.003")
+    checks.check(worst_p == 0.0 and edge <= 1e-15, "vtk: every point is a dumped sphere centre; rigid tetra of edge 0.0045")
+    same = len(res[2][1]) == len(series)
+    for (t1, f1), (t2, f2) in zip(series, res[2][1]):
+        d1, d2 = vr.read_dataset(f1), vr.read_dataset(f2)
+        same = same and t1 == t2 and np.array_equal(d1["points"], d2["points"]) and all(
+            np.array_equal(d1["cell"][nm], d2["cell"][nm]) for nm, _ in names)
+    checks.check(same, "vtk: -np 2 writes the same %d files as -np 1 (bitwise)" % len(series))
+    # restart: run 1000 + write_restart, read_restart + run 1000 in the same directory (bitwise: part restart)
+    d = T.workdir(args, "tdem_lig_clump_vtk_restart")
+    os.makedirs(os.path.join(d, "out"))
+    T.run(args.tdem, scene(n // 2, restart="mid.restart"), d, "first")
+    T.run(args.tdem, scene(n // 2, read="mid.restart"), d, "second")
+    s3 = vr.read_pvd(os.path.join(d, "out", "bodies.pvd"))
+    ok = [os.path.basename(f) for _, f in s3] == ["bodies_%d.vtu" % k for k in steps]
+    for (t1, f1), (t3, f3) in zip(series, s3):
+        d1, d3 = vr.read_dataset(f1), vr.read_dataset(f3)
+        ok = ok and np.array_equal(d1["cell"]["centre"], d3["cell"]["centre"])
+    print("vtk: series after the restart: times %s" % [t for t, _ in s3])
+    checks.check(ok, "vtk: after read_restart the series continues: %d files, bodies equal to the one run" % len(s3))
+    checks.check(all(abs(a_ - b_) <= 1e-15 * max(b_, 1e-300) for (a_, _), (b_, _) in zip(s3, series)),
+                 "vtk: the times of the continued series are the one run's")
+
+
 def main():
     def extra(p):
         p.add_argument("--part", required=True,
                        choices=["nve", "torquefree", "flatface", "parallel", "restart", "insert", "bad", "examples", "periodic", "ranks",
-                                "corrflat", "corrcont", "corrlocal", "corrpar", "corrwide", "corrstock", "corrsurf"])
+                                "corrflat", "corrcont", "corrlocal", "corrpar", "corrwide", "corrstock", "corrsurf", "vtk"])
     args = T.parse_args(extra)
     checks = T.Checks()
     globals()["part_" + args.part](args, checks)

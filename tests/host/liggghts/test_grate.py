@@ -5,8 +5,9 @@ by the stock fix wall/gran. Expected values are computed here independently of t
  kinematics  u_g(t), du_g/dt of every phase group (fix vector, printed with 17 digits) against this
              file's own implementation of the profiles of docs/grate.md §3 (sinusoidal with phases,
              trapezoidal with dwells, forward share and t_start, trapezoidal_accel), 1e-12 relative;
-             the bar corners of the VTK files against this file's own grate geometry (docs/grate.md §1;
-             the VTK writer prints 10 significant digits, so 1e-9 relative); the nodes and the element
+             the bar corners of the VTK XML files (.vtp, read with the VTK library) against this file's
+             own grate geometry (docs/grate.md §1), 1e-9 relative, and the series bars.pvd (every file,
+             in step order, at t = step*dt); the nodes and the element
              velocity "v" of the LIGGGHTS meshes themselves (dump mesh/vtk: nodes as %g, 6 digits).
  carried     a sphere resting on a moving bar: without rotation it follows the bar, x - x0 = u(t);
              with rotation it rolls without slip and its centre follows (2/7) u(t) (solid sphere on an
@@ -30,6 +31,8 @@ import sys
 import numpy as np
 
 import tdem_lig as T
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import vtk_read as vr  # noqa: E402
 
 PI = math.pi
 
@@ -169,11 +172,8 @@ def ref_corners(g, m, t):
 
 
 def read_vtk_points(path):
-    with open(path) as f:
-        toks = f.read().split()
-    i = toks.index("POINTS")
-    n = int(toks[i + 1])
-    return np.array([float(x) for x in toks[i + 3:i + 3 + 3 * n]]).reshape(n, 3)
+    """the points of a .vtp of fix tdem/grate, read with the VTK library (tests/host/vtk_read.py)"""
+    return vr.read_dataset(path)["points"]
 
 
 def read_mesh_vtk(path):
@@ -293,12 +293,16 @@ def part_kinematics(args, checks):
         checks.check(eu < 1e-12, "%s: u_g(t) vs reference profile, max |du|/stroke = %.2e < 1e-12" % (name, eu))
         checks.check(ev < 1e-12, "%s: du_g/dt vs reference, max |dv|/v_max = %.2e < 1e-12" % (name, ev))
         # VTK bar corners
-        files = sorted(glob.glob(os.path.join(d, "bars_*.vtk")), key=lambda p: int(re.findall(r"_(\d+)\.vtk", p)[0]))
+        files = sorted(glob.glob(os.path.join(d, "bars_*.vtp")), key=lambda p: int(re.findall(r"_(\d+)\.vtp", p)[0]))
         checks.check(len(files) == 13, "%s: VTK written at setup and every 250 steps (%d files, expected 13)" % (name, len(files)))
+        series = vr.read_pvd(os.path.join(d, "bars.pvd"))
+        checks.check([os.path.abspath(f) for _, f in series] == [os.path.abspath(f) for f in files] and
+                     all(abs(t - int(re.findall(r"_(\d+)\.vtp", f)[0]) * dt) <= 1e-15 for t, f in series),
+                     "%s: bars.pvd lists the %d files in step order at t = step*dt" % (name, len(series)))
         ev_ = 0.0
         moved = 0.0
         for p in files:
-            step = int(re.findall(r"_(\d+)\.vtk", p)[0])
+            step = int(re.findall(r"_(\d+)\.vtp", p)[0])
             pts = read_vtk_points(p)
             ref = ref_corners(g, m, step * dt)
             if pts.shape != ref.shape:
@@ -626,10 +630,10 @@ def part_2d(args, checks):
     checks.check(err < 5e-6, "2d: disk on the moving bar follows u(t): max |x - x0 - u| = %.3e m < 5e-6" % err)
     checks.check(fixed_move < 1e-9, "2d: disk on the fixed bar stays put: max |dx| = %.2e m < 1e-9" % fixed_move)
     checks.check(zmax == 0.0, "2d: disks stay in the plane z = 0 (max |z| = %.1e)" % zmax)
-    files = glob.glob(os.path.join(d, "bars_*.vtk"))
+    files = glob.glob(os.path.join(d, "bars_*.vtp"))
     ev_ = 0.0
     for p in files:
-        step = int(re.findall(r"_(\d+)\.vtk", p)[0])
+        step = int(re.findall(r"_(\d+)\.vtp", p)[0])
         pts = read_vtk_points(p)
         ref = ref_corners(g, m, step * dt)
         ev_ = max(ev_, float(np.abs(pts - ref).max()) / g["bar_length"]) if pts.shape == ref.shape else 1.0

@@ -10,7 +10,7 @@ if(NOT TDEM_LIGGGHTS_CLUMP)
   return()
 endif()
 foreach(_part nve torquefree flatface parallel restart insert bad examples periodic ranks
-              corrflat corrcont corrlocal corrpar corrwide corrstock corrsurf)
+              corrflat corrcont corrlocal corrpar corrwide corrstock corrsurf vtk)
   add_test(NAME liggghts.clump.${_part}
            COMMAND ${TDEM_LIGGGHTS_PYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/test_clump.py --part ${_part}
                    --tdem $<TARGET_FILE:tdem-liggghts> --stock ${TDEM_LIGGGHTS_STOCK}
@@ -31,4 +31,5 @@ foreach(_part flat local bad)
 endforeach()
 set_tests_properties(liggghts.clump.stock_flat liggghts.clump.stock_local PROPERTIES PROCESSORS 2)
 set_tests_properties(liggghts.clump.parallel liggghts.clump.insert liggghts.clump.examples
-                     liggghts.clump.periodic liggghts.clump.corrpar liggghts.clump.corrwide liggghts.clump.ranks PROPERTIES PROCESSORS 2)
+                     liggghts.clump.periodic liggghts.clump.corrpar liggghts.clump.corrwide liggghts.clump.ranks
+                     liggghts.clump.vtk PROPERTIES PROCESSORS 2)

@@ -32,6 +32,7 @@ namespace cl = tdem::clumps;
 
 namespace {
 constexpr double kRestartMagic = 20261205.0;        // local bodies: counts here, bodies per atom
+constexpr double kRestartMagicClock = 20261207.0;   // the same with the fix's clock (time, step)
 constexpr double kRestartMagicGlobal = 20261129.0;  // global bodies: every body in the record
 
 // Modify calls post_constructor() before restart(): whether the restart file read holds a global
@@ -96,6 +97,8 @@ void FixTDEMClump::parse(int narg, char **arg)
     error->all(FLERR, e.what());
   }
   correction = (int) args.correction;
+  if (args.vtk_every > 0) vtk = std::make_unique<cl::BodyVtk>(args.vtk_every, args.vtk_prefix);
+  clock = {update->atime + (update->ntimestep - update->atimestep) * update->dt, update->dt, update->ntimestep};
   bodies.keep_local_mass(args.correction == cl::Correction::local_mass);
   if (comm->me == 0) utils::logmesg(lmp, bodies.template_message(args.correction));
 }
@@ -106,6 +109,7 @@ int FixTDEMClump::setmask()
   mask |= INITIAL_INTEGRATE;
   mask |= FINAL_INTEGRATE;
   mask |= PRE_NEIGHBOR;
+  if (vtk) mask |= END_OF_STEP;
   return mask;
 }
 
@@ -261,10 +265,26 @@ void FixTDEMClump::setup(int /*vflag*/)
   dtf = 0.5 * update->dt * force->ftm2v;
   bodies.refresh_kinematics([&](cl::BodySet::Comm c) { forward(c); });
   bodies.sum_forces(atom->nlocal, atom->f, atom->torque, [&](cl::BodySet::Comm c) { forward(c); });
+  write_vtk();
+}
+
+void FixTDEMClump::end_of_step()
+{
+  write_vtk();
+}
+
+// the bodies as prefix_STEP.vtu (+ prefix.pvd) when vtk N prefix asks for this step
+void FixTDEMClump::write_vtk()
+{
+  clock.follow(update->ntimestep, update->dt);
+  if (!vtk || !vtk->due(update->ntimestep)) return;
+  const std::string msg = vtk->write(update->ntimestep, clock.at(update->ntimestep), bodies, world);
+  if (!msg.empty()) error->all(FLERR, where + ": " + msg);
 }
 
 void FixTDEMClump::reset_dt()
 {
+  clock.follow(update->ntimestep, update->dt);
   dtv = update->dt;
   dtf = 0.5 * update->dt * force->ftm2v;
 }
@@ -332,21 +352,25 @@ void *FixTDEMClump::extract(const char *name, int &dim)
 // magic, nbody, nsph, formed (clump_host.h); the bodies are in the per-atom records
 void FixTDEMClump::write_restart(FILE *fp)
 {
-  if (comm->me == 0) cl::write_restart_record(fp, bodies, kRestartMagic, {(double) formed});
+  if (comm->me == 0)
+    cl::write_restart_record(fp, bodies, kRestartMagicClock,
+                             {(double) formed, clock.at(update->ntimestep), (double) update->ntimestep});
 }
 
 // this version's record, or one of the global-bodies version (every body, given to its spheres at
 // the next set-up)
 void FixTDEMClump::restart(char *raw)
 {
-  double flag = 0.0;
+  double flag[3] = {0.0, 0.0, 0.0};
+  const bool with_clock = reinterpret_cast<const double *>(raw)[0] == kRestartMagicClock;
   try {
-    cl::read_restart_record(raw, bodies, kRestartMagic, kRestartMagicGlobal, &flag, 1, false,
-                            where + ": the restart record is not a tdem/clump record");
+    cl::read_restart_record(raw, bodies, with_clock ? kRestartMagicClock : kRestartMagic, kRestartMagicGlobal, flag,
+                            with_clock ? 3 : 1, false, where + ": the restart record is not a tdem/clump record");
   } catch (const std::exception &e) {
     error->all(FLERR, e.what());
   }
-  formed = (int) flag;
+  formed = (int) flag[0];
+  if (with_clock) clock = {flag[1], update->dt, (bigint) flag[2]};
   size_array_rows = (int) bodies.size();
   restarted = 1;
 }

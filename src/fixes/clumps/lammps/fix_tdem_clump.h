@@ -5,7 +5,7 @@
 //   fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO]
 //       [integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson]
 //       [insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule]
-//       [correction none|count|overlap|local_mass]
+//       [correction none|count|overlap|local_mass] [vtk N prefix]
 //
 // Design ("local bodies", shared with the LIGGGHTS fix: src/fixes/clumps/body_set.h): a rank keeps
 // the bodies of the spheres it owns; the body state travels with the spheres (exchange and
@@ -34,8 +34,10 @@ FixStyle(tdem/clump,FixTDEMClump);
 #include "contact/multi_contact/multi_contact.h"
 #include "fixes/clumps/body_output.h"
 #include "fixes/clumps/body_set.h"
+#include "fixes/clumps/body_vtk.h"
 #include "fixes/clumps/clump_args.h"
 
+#include <memory>
 #include <string>
 
 namespace LAMMPS_NS {
@@ -51,6 +53,7 @@ class FixTDEMClump : public Fix {
   void setup(int) override;
   void initial_integrate(int) override;
   void final_integrate() override;
+  void end_of_step() override;
   void pre_neighbor() override;
   void reset_dt() override;
   double compute_scalar() override;
@@ -77,6 +80,8 @@ class FixTDEMClump : public Fix {
   tdem::clumps::BodyOutput reports;  // scalar, vector, array over the ranks
   tdem::clumps::ClumpArgs args;     // the fix's arguments (insert, bodies molecule, correction)
   int correction;                    // tdem::clumps::Correction, for the pair and wall styles
+  std::unique_ptr<tdem::clumps::BodyVtk> vtk;  // vtk N prefix (body_vtk.h), or none
+  tdem::clumps::Clock clock;         // simulation time of the VTK files (kept in the restart record)
   int restarted;                     // bodies read from a restart file
   int formed;                        // bodies from molecules formed
   double dtv, dtf;
@@ -87,6 +92,7 @@ class FixTDEMClump : public Fix {
   void map_atoms();
   void set_spheres(bool positions);
   void forward(tdem::clumps::BodySet::Comm c);
+  void write_vtk();
 };
 
 }  // namespace LAMMPS_NS

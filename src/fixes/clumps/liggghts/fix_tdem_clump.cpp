@@ -106,6 +106,7 @@ int FixTDEMClump::setmask() {
   mask |= INITIAL_INTEGRATE;
   mask |= FINAL_INTEGRATE;
   mask |= PRE_NEIGHBOR;
+  if (vtk_) mask |= END_OF_STEP;
   if (correction_ != cl::Correction::none) mask |= PRE_FORCE;
   return mask;
 }
@@ -121,6 +122,8 @@ void FixTDEMClump::parse(int narg, char** arg) {
     fail(e.what());
   }
   correction_ = args_.correction;
+  if (args_.vtk_every > 0) vtk_.reset(new cl::BodyVtk(args_.vtk_every, args_.vtk_prefix));
+  clock_ = {update->atime + (update->ntimestep - update->atimestep) * update->dt, update->dt, update->ntimestep};
   log(bodies_.template_message(correction_));
 }
 
@@ -292,9 +295,20 @@ void FixTDEMClump::setup(int) {
   bodies_.refresh_kinematics([&](cl::BodySet::Comm c) { forward(c); });
   if (!have_force_) bodies_.sum_forces(atom->nlocal, atom->f, atom->torque, [&](cl::BodySet::Comm c) { forward(c); });
   have_force_ = true;
+  write_vtk();
 }
 
-void FixTDEMClump::reset_dt() {}
+void FixTDEMClump::end_of_step() { write_vtk(); }
+
+// the bodies as prefix_STEP.vtu (+ prefix.pvd) when vtk N prefix asks for this step
+void FixTDEMClump::write_vtk() {
+  clock_.follow(update->ntimestep, update->dt);  // LIGGGHTS's `timestep` calls no reset_dt
+  if (!vtk_ || !vtk_->due(update->ntimestep)) return;
+  const std::string msg = vtk_->write(update->ntimestep, clock_.at(update->ntimestep), bodies_, world);
+  if (!msg.empty()) fail(where_ + ": " + msg);
+}
+
+void FixTDEMClump::reset_dt() { clock_.follow(update->ntimestep, update->dt); }
 
 // owned spheres from their bodies: x (if positions, with the image flags), v, omega
 void FixTDEMClump::set_spheres(bool positions) {
@@ -352,27 +366,33 @@ void* FixTDEMClump::extract(const char* name, int& dim) {
 
 namespace {
 constexpr double kRestartMagic = 20261206.0;        // local bodies: counts here, bodies per atom
+constexpr double kRestartMagicClock = 20261208.0;   // the same with the fix's clock (time, step)
 constexpr double kRestartMagicGlobal = 20261130.0;  // global bodies: every body in the record
 }  // namespace
 
 // magic, nbody, nsph, formed, have_force (clump_host.h); the bodies (with their last force sums)
 // are in the per-atom records
 void FixTDEMClump::write_restart(FILE* fp) {
-  if (comm->me == 0) cl::write_restart_record(fp, bodies_, kRestartMagic, {formed_ ? 1.0 : 0.0, have_force_ ? 1.0 : 0.0});
+  if (comm->me == 0)
+    cl::write_restart_record(fp, bodies_, kRestartMagicClock, {formed_ ? 1.0 : 0.0, have_force_ ? 1.0 : 0.0,
+                                                              clock_.at(update->ntimestep), (double)update->ntimestep});
 }
 
 // this version's record, or one of the global-bodies version (every body, given to its spheres at
 // the next set-up)
 void FixTDEMClump::restart(char* raw) {
-  double flags[2] = {0.0, 0.0};
+  double flags[4] = {0.0, 0.0, 0.0, 0.0};
+  const bool with_clock = reinterpret_cast<const double*>(raw)[0] == kRestartMagicClock;
   try {
-    cl::read_restart_record(raw, bodies_, kRestartMagic, kRestartMagicGlobal, flags, 2, true,
+    cl::read_restart_record(raw, bodies_, with_clock ? kRestartMagicClock : kRestartMagic, kRestartMagicGlobal, flags,
+                            with_clock ? 4 : 2, true,
                             where_ + ": the restart record is not a tdem/clump record of this version");
   } catch (const std::exception& e) {
     fail(e.what());
   }
   formed_ = flags[0] != 0.0;
   have_force_ = flags[1] != 0.0;
+  if (with_clock) clock_ = {flags[2], update->dt, static_cast<long long>(flags[3])};
   size_array_rows = static_cast<int>(bodies_.size());
   restarted_ = true;
   log(where_ + ": " + std::to_string(bodies_.size()) + " bodies read from the restart file\n");

@@ -6,7 +6,7 @@
 //   fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO]
 //       [integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson]
 //       [insert N region REGID seed S [type T] [vel vx vy vz]] [bodies molecule]
-//       [correction none|count|overlap|local_mass]
+//       [correction none|count|overlap|local_mass] [vtk N prefix]
 //
 // Needs per-atom molecule IDs (atom_style hybrid sphere molecular) and
 // `neigh_modify exclude molecule GROUP` (the spheres of one clump must not interact).
@@ -26,6 +26,7 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +36,7 @@
 #include "clump_correction.h"
 #include "fixes/clumps/body_output.h"
 #include "fixes/clumps/body_set.h"
+#include "fixes/clumps/body_vtk.h"
 #include "fixes/clumps/clump_args.h"
 
 namespace LAMMPS_NS {
@@ -50,6 +52,7 @@ class FixTDEMClump : public Fix {
   void setup(int);
   void initial_integrate(int);
   void final_integrate();
+  void end_of_step();
   void pre_neighbor();
   void setup_pre_force(int);
   void pre_force(int);
@@ -79,6 +82,8 @@ class FixTDEMClump : public Fix {
   tdem::clumps::BodyOutput reports_;  // scalar, vector, array over the ranks
   tdem::clumps::ClumpArgs args_;  // the fix's arguments (insert, bodies molecule, correction)
   bool restarted_, formed_, have_force_, need_set_;
+  std::unique_ptr<tdem::clumps::BodyVtk> vtk_;  // vtk N prefix (body_vtk.h), or none
+  tdem::clumps::Clock clock_;  // simulation time of the VTK files (kept in the restart record)
 
   // multiple-contact correction (docs/clumps_liggghts.md, "Multiple-contact correction"): the bodies
   // of this fix as the sides of the shared LIGGGHTS correction (clump_correction.h)
@@ -101,6 +106,7 @@ class FixTDEMClump : public Fix {
   void map_atoms();
   void set_spheres(bool positions);
   void forward(tdem::clumps::BodySet::Comm c);
+  void write_vtk();
 };
 
 }  // namespace LAMMPS_NS

@@ -75,9 +75,10 @@ void FixTDEMGrate::setup(int vflag)
 void FixTDEMGrate::write_vtk(double t)
 {
   if (comm->me != 0) return;
-  const std::string path = vtk_prefix + "_" + std::to_string(update->ntimestep) + ".vtk";
   try {
-    tg::write_vtk_file(path, boxes_, t);
+    if (!vtk_files)
+      vtk_files = std::make_unique<tdem::vtkio::StepFiles>(vtk_prefix, tdem::vtkio::StepFiles::Kind::polydata);
+    vtk_files->write(update->ntimestep, tg::bars_dataset(boxes_, t));
   } catch (const std::exception &ex) {
     error->one(FLERR, where + ": " + ex.what());
   }

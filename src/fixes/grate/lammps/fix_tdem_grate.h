@@ -29,6 +29,7 @@ FixStyle(tdem/grate,FixTDEMGrate);
 #include "fix.h"
 #include "pair_styles/per_atom_rows.h"
 #include "fixes/grate/geometry.h"
+#include "fixes/vtk/vtk_files.h"
 #include "tdem_lammps_law.h"
 #include "contact_host.h"
 
@@ -88,6 +89,7 @@ class FixTDEMGrate : public tdem::host::PerAtomRows<Fix> {
 
   int vtk_every;
   std::string vtk_prefix;
+  std::unique_ptr<tdem::vtkio::StepFiles> vtk_files;  // rank 0: prefix_STEP.vtp and prefix.pvd
   void write_vtk(double t);
 
   int nlevels_respa;

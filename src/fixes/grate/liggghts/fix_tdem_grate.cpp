@@ -480,7 +480,9 @@ void FixTDEMGrate::write_vtk() {
   std::string msg;
   if (comm->me == 0) {
     try {
-      tg::write_vtk_file(vtk_prefix_ + "_" + std::to_string(update->ntimestep) + ".vtk", grate_->boxes(t_now_), t_now_);
+      if (!vtk_files_)
+        vtk_files_ = std::make_unique<tdem::vtkio::StepFiles>(vtk_prefix_, tdem::vtkio::StepFiles::Kind::polydata);
+      vtk_files_->write(update->ntimestep, tg::bars_dataset(grate_->boxes(t_now_), t_now_));
     } catch (const std::exception& e) {
       ok = 0;
       msg = e.what();

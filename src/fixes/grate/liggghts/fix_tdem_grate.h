@@ -33,6 +33,7 @@
 #include "fix.h"
 
 #include "fixes/grate/geometry.h"
+#include "fixes/vtk/vtk_files.h"
 
 namespace LAMMPS_NS {
 
@@ -65,6 +66,7 @@ class FixTDEMGrate : public Fix {
   int wall_type_ = 1;
   int vtk_every_ = 0;
   std::string vtk_prefix_;
+  std::unique_ptr<tdem::vtkio::StepFiles> vtk_files_;  // rank 0: prefix_STEP.vtp and prefix.pvd
   // own clock t = tb_ + (ntimestep - sb_) * dtb_, re-based when the time step changes (LIGGGHTS 3.8
   // does not keep the simulation time in restart files, so the clock is written to the restart file)
   double tb_ = 0.0;
