@@ -8,13 +8,18 @@
    request. Next to it: stock LIGGGHTS `model hooke` with `limitForce on` (no attraction), which
    derives its damping with the attraction-allowed formula, against tdem's `parameters material`
    (the same stiffness rule, damping derived for the convention in use).
-2. A bed of spheres settles in a box, in each engine on 2 MPI ranks, with the tdem laws
+2. What accuracy costs in time: the integrator study (validation/integrators/run.sh: every scheme,
+   phase-averaged errors of e and beta against the closed form vs steps per contact, cost per
+   contact), its Pareto picture (build/showcase/pareto.png) and a three-line verdict, then the cost
+   of every tdem normal law against the stock LAMMPS law it replaces, measured on the spot as
+   interleaved ratios with an A/A control (bench/law_costs.py; build/showcase/law_costs.md).
+3. A bed of spheres settles in a box, in each engine on 2 MPI ranks, with the tdem laws
    (input_scripts/liggghts/in.tdem_lsd_box, input_scripts/lammps/in.tdem_settle).
-3. Moving grates (fix tdem/grate) on 2 MPI ranks: forward-acting 2D and 3D, reverse-acting 3D,
+4. Moving grates (fix tdem/grate) on 2 MPI ranks: forward-acting 2D and 3D, reverse-acting 3D,
    with the mixing measures P' (compute tdem/mixing/velocity) and D, Q' (fix tdem/mixing/depth):
    the short version of validation/grate/run.sh; bar and particle VTK files for ParaView and the
    mixing plots in build/showcase/grate.
-4. Rigid multi-sphere clumps (fix tdem/clump) on 2 MPI ranks: 2000 tetra-sphere and rod clumps
+5. Rigid multi-sphere clumps (fix tdem/clump) on 2 MPI ranks: 2000 tetra-sphere and rod clumps
    inserted with random orientations and poured into a box (input_scripts/liggghts/clumps_pour.in);
    particle dumps for ParaView in build/showcase/clumps.
 
@@ -281,6 +286,57 @@ def clumps(n_per_kind=1000, steps=24000):
     return thermo[0], thermo[-1], secs, len(d1), len(last), worst, top
 
 
+def cheapest_rows(table_md):
+    """{target: (cheapest, cost, velocity_verlet cost)} from the integrator study's table.md."""
+    out, on = {}, False
+    for line in open(table_md, encoding="utf-8"):
+        if line.startswith("## Cheapest scheme"):
+            on = True
+            continue
+        if on and line.startswith("## "):
+            break
+        cells = [c.strip().replace("\x00", "|") for c in line.replace("\\|", "\x00").strip().strip("|").split("|")]
+        if on and len(cells) == 4 and cells[0] not in ("target", "---"):
+            best = cells[1].split(" (")
+            out[cells[0]] = (best[0], best[1].rstrip(")") if len(best) > 1 else "-", cells[3])
+    return out
+
+
+def accuracy_cost(steps, rounds):
+    """The integrator study with its verdict, and the per-law cost table; returns the seconds."""
+    t0 = time.time()
+    res = os.path.join(HERE, "validation", "integrators", "results")
+    r = subprocess.run(["sh", os.path.join(HERE, "validation", "integrators", "run.sh")], capture_output=True, text=True)
+    sys.stdout.write(r.stdout)
+    if r.returncode != 0:
+        sys.stderr.write(r.stderr[-3000:])
+        raise SystemExit("showcase: the integrator study failed")
+    shutil.copy(os.path.join(res, "pareto.png"), os.path.join(OUT, "pareto.png"))
+    shutil.copy(os.path.join(res, "table.md"), os.path.join(OUT, "integrators.md"))
+    c = cheapest_rows(os.path.join(res, "table.md"))
+
+    def row(key):
+        return c.get(key, ("?", "?", "?"))
+    e2, e3, e4, ei = (row("|Δe| ≤ 0.01, generic dt"), row("|Δe| ≤ 0.001, generic dt"),
+                      row("|Δe| ≤ 0.0001, generic dt"), row("|Δe| ≤ 0.001, dt = t_c/N"))
+    print("verdict (head-on LSD impact, e = 0.8, the step not a divisor of the contact time, as in every real run):")
+    print("  |de| <= 1e-2:  %s at a cost of %s force evaluations per contact; velocity Verlet (= nve/sphere) %s:"
+          " keep nve/sphere." % (e2[0], e2[1], e2[2]))
+    print("  |de| <= 1e-3:  %s at %s, velocity Verlet %s: every scheme is first order here (the contact starts and"
+          " ends between grid points), so higher order buys nothing; refine the step." % (e3[0], e3[1], e3[2]))
+    print("  |de| <= 1e-4:  %s at a generic step; only with dt = t_c/N exactly does order pay (%s reaches 1e-3 at"
+          " %s, velocity Verlet %s). The time-grid correction of issue 22 targets this." % (
+              e4[0] if e4[0] != "none within N ≤ 320" else "no scheme within 320 steps per contact", ei[0], ei[1], ei[2]))
+    print("picture: %s (error against cost per contact); full table: %s" % (os.path.join(OUT, "pareto.png"),
+                                                                              os.path.join(OUT, "integrators.md")))
+    print("\ncost of the tdem normal laws against the stock LAMMPS laws (bench/law_costs.py, chute of 32000 spheres):")
+    r = subprocess.run([sys.executable, os.path.join(HERE, "bench", "law_costs.py"), "--build", BUILD, "--steps",
+                        str(steps), "--rounds", str(rounds), "--out", os.path.join(OUT, "law_costs.md")])
+    if r.returncode != 0:
+        raise SystemExit("showcase: bench/law_costs.py failed")
+    return time.time() - t0
+
+
 def main():
     for exe in (LIG, LMP):
         if not os.access(exe, os.X_OK):
@@ -306,11 +362,14 @@ def main():
               ", ".join("%.2f -> %.3f" % (r[2], r[4]) for r in stock))
         if plot(rows, os.path.join(OUT, "impact.png")):
             print("plot: %s" % os.path.join(OUT, "impact.png"))
-        print("\n== 2. Settling beds with the tdem laws, mpirun -np 2 ==")
+        print("\n== 2. What accuracy costs in time (validation/integrators/run.sh, bench/law_costs.py) ==")
+        secs = accuracy_cost(300, 3)
+        print("step 2: %.0f s" % secs)
+        print("\n== 3. Settling beds with the tdem laws, mpirun -np 2 ==")
         for host, script, first, last, secs in settle(tmp):
             print("%-9s %-40s %5.1f s\n          first thermo: %s\n          last thermo:  %s"
                   % (host, script, secs, first.strip(), last.strip()))
-        print("\n== 3. Moving grates with mixing analysis, mpirun -np 2 (validation/grate/run.sh --short) ==")
+        print("\n== 4. Moving grates with mixing analysis, mpirun -np 2 (validation/grate/run.sh --short) ==")
         grate = os.path.join(OUT, "grate")
         env = dict(os.environ, TDEM_LIGGGHTS=LIG, WORKDIR=grate)
         t0 = time.time()
@@ -321,7 +380,7 @@ def main():
             sys.stderr.write(r.stderr[-3000:])
             raise SystemExit("showcase: the grate scenes failed")
         print("grate scenes: %.0f s; VTK files (bars and particles) and plots in %s" % (time.time() - t0, grate))
-        print("\n== 4. Rigid clumps poured into a box, mpirun -np 2 (input_scripts/liggghts/clumps_pour.in) ==")
+        print("\n== 5. Rigid clumps poured into a box, mpirun -np 2 (input_scripts/liggghts/clumps_pour.in) ==")
         first, last, secs, nbody, nsph, worst, top = clumps()
         if not worst < 1e-12:
             raise SystemExit("showcase: a clump did not stay rigid (a distance changed by %g m)" % worst)

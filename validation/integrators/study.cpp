@@ -23,6 +23,7 @@
 
 #include "collision/analytic.h"
 #include "collision/integrate_impact.h"
+#include "collision/phase_average.h"
 
 using namespace tdem;
 using namespace tdem::collision;
