@@ -41,8 +41,12 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 T0 = time.time()
 
 
-def say(msg):
-    print("[%5.0f s] %s" % (time.time() - T0, msg), flush=True)
+def say(msg, k=None, n=None, t_start=None):
+    """A progress line; with k runs of n done since t_start also the estimated remaining time."""
+    rem = ""
+    if k and n and t_start is not None:
+        rem = ", about %.0f s to go in this phase" % ((time.time() - t_start) / k * (n - k))
+    print("[%5.0f s] %s%s" % (time.time() - T0, msg, rem), flush=True)
 
 
 def run(cmd, cwd, name, text, np_=1):
@@ -133,10 +137,12 @@ def lammps(exe, wd, n, settle, steps, rounds):
     # one round: tdem and stock at 1 and 2 ranks in the order A1 B1 A2 B2 B2 A2 B1 A1, so that a slow
     # phase of the machine touches both fixes and both rank counts of the round alike
     order = [("tdem", 1), ("stock", 1), ("tdem", 2), ("stock", 2), ("stock", 2), ("tdem", 2), ("stock", 1), ("tdem", 1)]
+    t_phase = time.time()
     for k, (what, np_) in enumerate(order * rounds + [("none", 1), ("none", 2)]):
         text = (lmp_head(n) + "read_data settle.data add append fix pm NULL Molecules\n" + fixes[what]
                 + lmp_inter() + "thermo_style custom step atoms\nthermo {s}\nrun 100\nrun {s}\n".format(s=steps))
-        say("LAMMPS: %s on %d rank(s), %d steps (run %d of %d)" % (what, np_, steps, k + 1, 8 * rounds + 2))
+        say("LAMMPS: %s on %d rank(s), %d steps (run %d of %d)" % (what, np_, steps, k + 1, 8 * rounds + 2),
+            k, 8 * rounds + 2, t_phase)
         res.setdefault((what, np_), []).append(last_run(run([exe], wd, "in.%s%d_%d" % (what, np_, k), text, np_)))
     return res
 
@@ -178,9 +184,12 @@ region ins block {lo} {Li} {lo} {Li} 0.005 {Hi} units box
              "fix ms all multisphere\n".format(a=a, n=n))
     tail = "thermo 1000\nrun {s}\nrun {t}\n".format(s=settle, t=steps)
     res = {}
+    t_phase = time.time()
     for np_ in (1, 2):
         for k, what in enumerate(("tdem", "stock", "stock", "tdem") * rounds):
-            say("LIGGGHTS: %s on %d rank(s), %d + %d steps" % (what, np_, settle, steps))
+            done = (np_ - 1) * 4 * rounds + k
+            say("LIGGGHTS: %s on %d rank(s), %d + %d steps (run %d of %d)" % (what, np_, settle, steps, done + 1, 8 * rounds),
+                done, 8 * rounds, t_phase)
             grid = "" if np_ == 1 else "processors 2 1 1\n"
             text = (tdem if what == "tdem" else stock).replace("processors * * 1\n", grid or "processors * * 1\n") + tail
             res.setdefault((what, np_), []).append(last_run(run([exe], wd, "in.l%s%d_%d" % (what, np_, k), text, np_)))

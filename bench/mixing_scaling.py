@@ -40,8 +40,12 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
            OMPI_MCA_rmaps_base_oversubscribe="1", TDEM_MIXING_REPORT="1")
 
 
-def say(msg):
-    print("[%5.0f s] %s" % (time.time() - T0, msg), flush=True)
+def say(msg, k=None, n=None, t_start=None):
+    """A progress line; with k runs of n done since t_start also the estimated remaining time."""
+    rem = ""
+    if k and n and t_start is not None:
+        rem = ", about %.0f s to go for this engine" % ((time.time() - t_start) / k * (n - k))
+    print("[%5.0f s] %s%s" % (time.time() - T0, msg, rem), flush=True)
 
 
 def bed(path, n):
@@ -117,10 +121,12 @@ def maxrss(out):
 
 def timing(exe, engine, wd, box, evals, rounds):
     res = {}
+    t_phase, k, n = time.time(), 0, 3 * rounds * 4
     for style in ("base", "velocity", "depth"):
         for r in range(rounds):
             for np_ in (1, 2, 2, 1):
-                say("%s %s on %d rank(s), round %d" % (engine, style, np_, r + 1))
+                say("%s %s on %d rank(s), round %d (run %d of %d)" % (engine, style, np_, r + 1, k + 1, n), k, n, t_phase)
+                k += 1
                 log, out = run(exe, wd, "in.%s%d" % (style, np_), scene(engine, style, box, evals), np_,
                                wrap=("/usr/bin/time", "-f", "tdem-maxrss %M"))
                 res.setdefault((style, np_), []).append((loop_time(log), held(out), maxrss(out)))

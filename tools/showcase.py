@@ -36,6 +36,8 @@ import tempfile
 import time
 
 HERE = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(HERE, "tools"))
+from progress import Progress  # noqa: E402
 BUILD = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "build"))
 LIG = os.path.join(BUILD, "bin", "tdem-liggghts")
 LMP = os.path.join(BUILD, "bin", "tdem-lammps")
@@ -343,6 +345,9 @@ def main():
             raise SystemExit("showcase: %s not built (run tools/setup.sh)" % exe)
     os.makedirs(OUT, exist_ok=True)
     tmp = tempfile.mkdtemp(prefix="tdem_showcase_")
+    # the steps and their expected seconds on 2 cores: a progress line after each, with the time to go
+    prog = Progress({"step 1 (impacts)": 15, "step 2 (accuracy and cost)": 90, "step 3 (settling beds)": 40,
+                     "step 4 (grates)": 70, "step 5 (clumps)": 50})
     try:
         print("== 1. Sphere on a wall, v0 = %g m/s, R = %g m, %d steps per contact ==" % (V0, R, STEPS_PER_CONTACT))
         rows = impacts(tmp)
@@ -362,13 +367,15 @@ def main():
               ", ".join("%.2f -> %.3f" % (r[2], r[4]) for r in stock))
         if plot(rows, os.path.join(OUT, "impact.png")):
             print("plot: %s" % os.path.join(OUT, "impact.png"))
+        prog.done("step 1 (impacts)")
         print("\n== 2. What accuracy costs in time (validation/integrators/run.sh, bench/law_costs.py) ==")
-        secs = accuracy_cost(300, 3)
-        print("step 2: %.0f s" % secs)
+        accuracy_cost(300, 3)
+        prog.done("step 2 (accuracy and cost)")
         print("\n== 3. Settling beds with the tdem laws, mpirun -np 2 ==")
         for host, script, first, last, secs in settle(tmp):
             print("%-9s %-40s %5.1f s\n          first thermo: %s\n          last thermo:  %s"
                   % (host, script, secs, first.strip(), last.strip()))
+        prog.done("step 3 (settling beds)")
         print("\n== 4. Moving grates with mixing analysis, mpirun -np 2 (validation/grate/run.sh --short) ==")
         grate = os.path.join(OUT, "grate")
         env = dict(os.environ, TDEM_LIGGGHTS=LIG, WORKDIR=grate)
@@ -380,6 +387,7 @@ def main():
             sys.stderr.write(r.stderr[-3000:])
             raise SystemExit("showcase: the grate scenes failed")
         print("grate scenes: %.0f s; VTK files (bars and particles) and plots in %s" % (time.time() - t0, grate))
+        prog.done("step 4 (grates)")
         print("\n== 5. Rigid clumps poured into a box, mpirun -np 2 (input_scripts/liggghts/clumps_pour.in) ==")
         first, last, secs, nbody, nsph, worst, top = clumps()
         if not worst < 1e-12:
@@ -389,6 +397,7 @@ def main():
               "                                                        last:  %s\n"
               "  largest change of a distance inside a clump: %.1e m; highest sphere centre %.4f m; dumps in %s"
               % (nbody, nsph, secs, first.strip(), last.strip(), worst, top, os.path.join(OUT, "clumps")))
+        prog.done("step 5 (clumps)")
         print("\nOutput in %s" % OUT)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)

@@ -40,6 +40,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+from progress import Progress  # noqa: E402
+
 # ----------------------------------------------------------------------------------- LAMMPS
 # box with 1 cm margins around the walls (so that the grate's bars fit inside it)
 LMP_HEAD = """units si
@@ -376,6 +379,7 @@ def main():
                 for v in ("normal", "tangential"):
                     text = lmp_variant(v, a.steps) if engine == "lammps" else lig_variant(v, a.steps)
                     todo.append((v + "_off", exe_off, text))
+            prog = Progress(n=len(todo), label=f"[{engine}] variants")
             for v, e, text in todo:
                 r = measure(engine, e, wd, v, text, a.steps)
                 if a.wallclock:
@@ -384,6 +388,7 @@ def main():
                 print(f"[{engine}] {v}: {r['atoms']} atoms, Ir/particle-step total {r['total'] / (r['atoms'] * a.steps):.1f}"
                       f" pair {r['pair'] / (r['atoms'] * a.steps):.1f} fixes {r['modify'] / (r['atoms'] * a.steps):.1f}"
                       f" ({r['cg_seconds']:.0f} s)", flush=True)
+                prog.done(f"[{engine}] {v}")
     finally:
         if a.keep:
             print("kept", root)

@@ -70,7 +70,19 @@ chute_run() {
     for n in "${order[@]}"; do chute_scene "$n" >> "$work/in.bench"; done
   done
   echo "$BENCH: ${#names[@]} styles x $repeats rounds x $steps steps, 32000 spheres (in.chute), $(date -u '+%Y-%m-%d %H:%M UTC')"
-  (cd "$work" && ${TDEM_BENCH_WRAP:-} "$exe" -in in.bench -log log.bench -echo none > out.bench)
+  # one process for all runs: a progress line (with the remaining time) when a run ends
+  local total=$((${#names[@]} * repeats)) t0 k=0 line
+  t0=$(date +%s)
+  (cd "$work" && ${TDEM_BENCH_WRAP:-} "$exe" -in in.bench -log log.bench -echo none) | tee "$work/out.bench" |
+    while IFS= read -r line; do
+      case $line in
+        "Loop time of"*)
+          k=$((k + 1))
+          el=$(($(date +%s) - t0))
+          echo "[progress] run $k/$total done; elapsed $el s, about $((el * (total - k) / k)) s to go" ;;
+      esac
+    done
+  [ "${PIPESTATUS[0]}" = 0 ] || { echo "$BENCH: tdem-lammps failed (see $work/log.bench)" >&2; exit 1; }
 }
 
 chute_table() {  # $1, $2 = reference styles of the two ratio columns

@@ -86,7 +86,11 @@ EOF
 SCHEMES="euler symplectic_euler taylor2 taylor3 leapfrog position_verlet velocity_verlet
 velocity_verlet_sync beeman ab2 ab3 ab4 ab5 abm4 gear4 gear5 gear6"
 run_one nve_first "fix nve all nve/sphere"
-for s in $SCHEMES; do run_one "$s" "fix nve all tdem/integrate scheme $s"; done
+. "$ROOT/tools/progress.sh"
+_st=""
+for s in $SCHEMES; do _st="$_st $s:1"; done
+progress_init "$_st"
+for s in $SCHEMES; do run_one "$s" "fix nve all tdem/integrate scheme $s"; progress_done "$s"; done
 run_one nve_last "fix nve all nve/sphere"
 
 /usr/bin/python3 - "$OUT" "$STEPS" $SCHEMES <<'EOF'

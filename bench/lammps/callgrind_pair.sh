@@ -83,6 +83,8 @@ echo "callgrind: pair compute() instructions, $(date -u '+%Y-%m-%d %H:%M UTC'), 
 echo
 echo "| scene | steps | style | total instructions | pair compute() | pair tdem / stock | thermo after the run |"
 echo "|---|---|---|---|---|---|---|"
+. "$here/tools/progress.sh"
+progress_init "chute.stock:1 chute.tdem:1 bed.stock:1 bed.tdem:1"
 for sc in chute bed; do
   steps=$chute_steps; [ $sc = bed ] && steps=$bed_steps
   stock_pair=""
@@ -101,5 +103,6 @@ for sc in chute bed; do
     name="gran/hooke/history"; [ $sc = bed ] && name="gran/hertz/history"
     [ $st = tdem ] && { name="tdem/gran lsd + cundall_strack"; [ $sc = bed ] && name="tdem/gran hertz kuwabara_kono + cundall_strack"; }
     echo "| $sc | $steps | \`$name\` | $total | $pair | $ratio | $thermo |"
+    progress_done "$tag" >&2  # stderr: stdout is the table
   done
 done

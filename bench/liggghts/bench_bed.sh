@@ -114,11 +114,17 @@ callgrind_counts() {
 loop_time() { grep '^Loop time' "$1" | tail -1 | awk '{print $4}'; }
 pair_time() { grep '^Pair  time' "$1" | tail -1 | awk '{print $5}'; }
 timed_runs() {
+  . "$(cd "$(dirname "$0")/../.." && pwd)/tools/progress.sh"
+  _st=""
+  i=1
+  while [ "$i" -le "$REPEATS" ]; do for m in $NAMES; do _st="$_st r$i.$m:1"; done; i=$((i + 1)); done
+  progress_init "$_st"
   i=1
   while [ "$i" -le "$REPEATS" ]; do
     for m in $NAMES; do
       (cd "$WORK" && "$EXE" -in "in.$m" -log "log.$m" -echo none -screen /dev/null)
       echo "$m $(loop_time "$WORK/log.$m") $(pair_time "$WORK/log.$m") $(contacts "$WORK/log.$m")" >> "$WORK/times"
+      progress_done "r$i.$m"
     done
     i=$((i + 1))
   done

@@ -84,6 +84,11 @@ EOI
 
 CASES="moving standing floor"
 for c in $CASES; do write_input "$c" > "$WORK/in.$c"; done
+. "$root/tools/progress.sh"
+_st=""
+i=1
+while [ "$i" -le "$REPEATS" ]; do for c in $CASES; do _st="$_st r$i.$c:1"; done; i=$((i + 1)); done
+progress_init "$_st"
 : > "$WORK/times"
 i=1
 while [ "$i" -le "$REPEATS" ]; do
@@ -99,6 +104,7 @@ while [ "$i" -le "$REPEATS" ]; do
     nc=$(awk '/^ *Step/ {k = 0; s = 0; next} /^Loop time/ {m = (k ? s / k : 0)} $1 ~ /^[0-9]+$/ && NF == 4 {s += $4; k++} END {printf "%.2f", m}' "$WORK/log.$c")
     echo "$c $lt $nat $nc" >> "$WORK/times"
     echo "  round $i: $c: loop time $lt s for $STEPS steps, $nat atoms, $nc = contact/atom summed"
+    progress_done "r$i.$c"
   done
   i=$((i + 1))
 done

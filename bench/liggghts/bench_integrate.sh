@@ -57,12 +57,18 @@ run_one() { # $1 name, $2 integrator fix arguments
   fi
 }
 : > "$WORK/times"
+. "$HERE/../../tools/progress.sh"
+_st="nve_sphere:1"
+for s in $SCHEMES; do _st="$_st $s:1"; done
+progress_init "$_st"
 run_one nve_sphere nve/sphere
+progress_done nve_sphere
 if [ -z "${LIMIT:-}" ]; then
   LIMIT=$(awk '$1 == "nve_sphere" {l = int(10 * $2) + 1; print (l < 30 ? 30 : l)}' "$WORK/times")
 fi
 for s in $SCHEMES; do
   run_one "$s" "tdem/integrate scheme $s"
+  progress_done "$s"
 done
 
 # ------------------------------------------------------------------ the integrator alone

@@ -93,12 +93,18 @@ pair_time() { # $1 input -> seconds in the pair style (force kernel) during the 
 }
 
 best_stock=""; best_tdem=""; pair_stock=""; pair_tdem=""
+. "$(cd "$(dirname "$0")/../.." && pwd)/tools/progress.sh"
+_st=""
+i=1
+while [ "$i" -le "$REPEATS" ]; do _st="$_st r$i.stock:1 r$i.tdem:1"; i=$((i + 1)); done
+progress_init "$_st"
 i=1
 while [ "$i" -le "$REPEATS" ]; do
   for m in stock tdem; do
     t=$(loop_time "$WORK/in.$m")
     p=$(pair_time "$WORK/in.$m")
     echo "run $i $m: $t s (pair $p s)"
+    progress_done "r$i.$m"
     echo "$t" >> "$WORK/times.$m"
     eval "best=\${best_$m}"
     if [ -z "$best" ] || awk "BEGIN{exit !($t < $best)}"; then eval "best_$m=$t"; fi

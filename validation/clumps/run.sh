@@ -40,10 +40,14 @@ fi
 mkdir -p "$here/results"
 rm -f "$here/results"/*.png "$here/results/table.md" "$here/results/results.json"
 cd "$here" || exit 2
+. "$root/tools/progress.sh"
+progress_init "lammps:4 liggghts:1"
 /usr/bin/python3 study.py --lammps "$lmp" --parts flat,tilted,rigid,correction_lammps $quick || exit 1
+progress_done lammps
 lig=${TDEM_LIGGGHTS:-$(dirname "$lmp")/tdem-liggghts}
 if [ -x "$lig" ]; then
   /usr/bin/python3 study.py --liggghts "$lig" || exit 1
+  progress_done liggghts
 else
   echo "run.sh: no tdem-liggghts at '$lig': the LIGGGHTS correction section is skipped" >&2
 fi

@@ -24,8 +24,11 @@ run() {  # label host exe stock version
   echo "== $1 ($3)"
   "$py" "$here/dem_suite.py" --host "$2" --exe "$3" --stock "$4" --version "$5" --mpirun "$(command -v mpirun)" \
     --workdir "$work/$1" --table "$rows" --label "$1" || status=1
+  progress_done "$1"
 }
 started=$(date +%s)
+. "$root/tools/progress.sh"
+progress_init "LIGGGHTS-3.8:1 LAMMPS-2022:1 LAMMPS-4Feb2025:1 LAMMPS-4Jul2026:1"
 run LIGGGHTS-3.8 liggghts "$build/bin/tdem-liggghts" /usr/bin/liggghts 3.8
 run LAMMPS-2022 lammps "$build/bin/tdem-lammps" /usr/bin/lmp 29Sep2021
 run LAMMPS-4Feb2025 lammps "$build/bin/tdem-lammps-4Feb2025" /var/cache/tdem/lammps-20250204/bin/lmp 4Feb2025

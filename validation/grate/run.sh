@@ -47,6 +47,8 @@ TMPDIR=$(mktemp -d /tmp/tdem_mpi_XXXXXX) || exit 2
 export TMPDIR
 trap 'rm -rf "$TMPDIR"' EXIT
 scenes="$root/input_scripts/liggghts"
+. "$root/tools/progress.sh"
+progress_init "fwd2d:3 fwd3d:6 rev3d:6 stop3d:1 stop3d_dt1:2 analyse:1"
 
 run_scene() { # $1 scene file, $2 tag, further args: -var pairs
   in=$1; tag=$2; shift 2
@@ -55,6 +57,7 @@ run_scene() { # $1 scene file, $2 tag, further args: -var pairs
   (cd "$work" && $mpirun "$exe" -in "$scenes/$in" -var tag "$tag" "$@" -log "log.$tag" -echo none \
     -screen /dev/null) || { echo "run.sh: $in ($tag) failed, see $work/log.$tag" >&2; exit 2; }
   echo "  $tag: $in $*: $(( $(date +%s) - t0 )) s, $(grep -c . "$work/${tag}_series.txt") output lines"
+  progress_done "$tag"
 }
 echo "grate scenes in $work (tend = $tend s per scene, 2 ranks, $exe)"
 run_scene grate_forward_2d.in fwd2d -var tend "$tend" || exit 2
@@ -67,5 +70,6 @@ echo "VTK files: $(ls "$work"/*.vtp "$work"/*.vtk 2>/dev/null | wc -l) (bars: <t
 # shellcheck disable=SC2086
 /usr/bin/python3 "$here/analyse.py" "$work" "$results" $opt
 status=$?
+progress_done analyse
 echo "results: $results (table.md, mixing_time.png, mixing_along.png, residence.png, checks.txt)"
 exit $status

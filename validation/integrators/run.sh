@@ -18,10 +18,15 @@ results="$here/results"
 mkdir -p "$results"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+. "$root/tools/progress.sh"
+progress_init "compile:1 study:2 analyse:1"
 echo "compiling the study driver (header-only core from $root/src) ..."
 ${CXX:-c++} -O2 -std=c++17 -I"$root/src" "$here/study.cpp" -o "$tmp/study"
+progress_done compile
 echo "running $(( 21 * 5 * 6 * 5 )) phase averages of ${PHASES:-16} impacts ..."
 "$tmp/study" "${PHASES:-16}" > "$tmp/errors.csv"
 mv "$tmp/errors.csv" "$results/errors.csv"
+progress_done study
 /usr/bin/python3 "$here/analyse.py" > /dev/null
+progress_done analyse
 echo "wrote $results/errors.csv, table.md, errors_vs_N.png, pareto.png"

@@ -28,7 +28,10 @@ cmake --build "$work/build" -j "$(nproc)" >"$work/build.log" 2>&1 &
 pid=$!; t0=$(date +%s)
 while kill -0 $pid 2>/dev/null; do
   sleep 30
-  echo "[dropin] building ... $(grep -oE '^\[ *[0-9]+%\]' "$work/build.log" | tail -n 1) after $(($(date +%s) - t0)) s"
+  pct="$(grep -oE '^\[ *[0-9]+%\]' "$work/build.log" | tail -n 1 | tr -dc '0-9')"
+  el=$(($(date +%s) - t0))
+  if [ -n "$pct" ] && [ "$pct" -gt 0 ]; then rem=$((el * (100 - pct) / pct)); else rem="?"; fi
+  echo "[dropin] building ... ${pct:-0} % after $el s, about $rem s to go"
 done
 wait $pid || { tail -n 30 "$work/build.log"; echo "[dropin] FAIL: the LAMMPS build failed"; exit 1; }
 lmp="$work/build/lmp"

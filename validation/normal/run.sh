@@ -22,6 +22,10 @@ rm -f "$results"/*.json "$results"/*.txt "$results"/*.png "$results"/table.md "$
 status=0
 found=0
 cd "$here" || exit 2
+. "$root/tools/progress.sh"
+stages=""
+for f in data/*.csv; do [ -e "$f" ] && stages="$stages $(basename "$f" .csv):4"; done
+progress_init "$stages plots:1 hosts:2"
 for f in data/*.csv; do
   [ -e "$f" ] || continue
   found=1
@@ -35,12 +39,14 @@ for f in data/*.csv; do
     status=1
   fi
   sed -n '/^summary/,$p' "results/$stem.txt"
+  progress_done "$stem"
 done
 if [ $found -eq 0 ]; then
   echo "run.sh: no data files in $here/data" >&2
   exit 2
 fi
 "$py" plot.py results || status=1
+progress_done plots
 # The printed input lines in the hosts, where the host executables are built next to tdem-fit
 # (or given as $TDEM_LIGGGHTS / $TDEM_LAMMPS).
 bindir=$(dirname "$fit")
@@ -53,6 +59,7 @@ if [ -n "$hostargs" ]; then
   echo "running the printed input lines in the hosts ..."
   # shellcheck disable=SC2086
   "$py" check_hosts.py results $hostargs || status=1
+  progress_done hosts
 else
   echo "(no tdem-liggghts / tdem-lammps next to tdem-fit: results/hosts.md not written)"
 fi

@@ -27,6 +27,8 @@ rm -f "$results"/*.png "$results"/table.md "$results"/cases.md "$results"/sweep_
   "$results"/sweep_analytic.csv
 status=0
 cd "$here" || exit 2
+. "$root/tools/progress.sh"
+progress_init "harness:2 liggghts:4 lammps:4 plots:1"
 
 # 1. The harness: every case of sweep.py (normal law x tangential law) at every angle.
 echo "sweeping the impact angle with $collide ..."
@@ -35,6 +37,7 @@ echo "sweeping the impact angle with $collide ..."
 #    results/sweep_analytic.csv.
 "$py" sweep.py "$collide" results/sweep_harness.csv --step "${STEP:-1}" --jobs "${JOBS:-2}" \
   --cases-md results/cases.md --analytic results/sweep_analytic.csv --extra-angles "${HOST_ANGLES:-}" || exit 2
+progress_done harness
 
 # 2. Host runs (hosts.py): the same cases (sweep.configs()) as spheres hitting a plane wall in
 #    tdem-liggghts / tdem-lammps at 12 angles (1-80 deg; HOST_ANGLES overrides), written to
@@ -59,6 +62,7 @@ if [ "${HOSTS:-1}" != 0 ]; then
       echo "host sweep in $exe ..."
       # shellcheck disable=SC2086
       "$py" hosts.py "$h" "$exe" "results/sweep_$h.csv" $hopts || status=1
+      progress_done "$h"
     else
       echo "run.sh: $exe not found: no $h host sweep" >&2
     fi
@@ -67,5 +71,6 @@ fi
 
 # 3. Plots and table.
 "$py" plot.py results || status=1
+progress_done plots
 echo "results in $results (table.md, cases.md, beta_vs_psi1.png, rebound_angle.png, spin.png, e_t.png, sweep_*.csv)"
 exit $status
