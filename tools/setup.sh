@@ -41,7 +41,7 @@ packages=(
   lammps liblammps-dev lammps-examples
   libopenmpi-dev openmpi-bin
   cmake g++ make
-  libvtk9-dev python3-vtk9
+  libvtk9-dev python3-vtk9 xvfb xauth
   googletest libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy
   dpkg-dev xz-utils ca-certificates debian-archive-keyring

@@ -219,12 +219,31 @@ def _is_number(x):
         return False
 
 
+def render(*args):
+    """Pictures through tools/render.py (VTK, off-screen under Xvfb); False when that cannot run."""
+    xvfb = shutil.which("xvfb-run")
+    if not xvfb:
+        print("(no xvfb-run: pictures skipped; tools/setup.sh installs xvfb)")
+        return False
+    r = subprocess.run([xvfb, "-a", "-s", "-screen 0 1280x1024x24", sys.executable,
+                        os.path.join(HERE, "tools", "render.py")] + [str(a) for a in args],
+                       capture_output=True, text=True)
+    sys.stdout.write("".join(l + "\n" for l in r.stdout.splitlines() if l.startswith("render.py")))
+    if r.returncode != 0:
+        sys.stderr.write(r.stdout[-2000:] + r.stderr[-2000:])
+        raise SystemExit("showcase: rendering %s failed" % " ".join(str(a) for a in args))
+    return True
+
+
 def settle(tmp):
     res = []
     for host, exe, script in (("LIGGGHTS", LIG, "input_scripts/liggghts/in.tdem_lsd_box"),
                               ("LAMMPS", LMP, "input_scripts/lammps/in.tdem_settle")):
         w = tempfile.mkdtemp(dir=tmp)
-        shutil.copy(os.path.join(HERE, script), os.path.join(w, "in.scene"))
+        text = open(os.path.join(HERE, script)).read()
+        text += "\nwrite_dump all custom bed.dump id type x y z vx vy vz radius\n"
+        with open(os.path.join(w, "in.scene"), "w") as f:
+            f.write(text)
         t0 = time.time()
         r = subprocess.run(MPIRUN + [exe, "-in", "in.scene", "-log", "none"], cwd=w, capture_output=True, text=True)
         if r.returncode != 0:
@@ -232,6 +251,8 @@ def settle(tmp):
             raise SystemExit("showcase: %s failed" % script)
         thermo = [l for l in r.stdout.splitlines() if l.split() and all(_is_number(x) for x in l.split())]
         res.append((host, script, thermo[0], thermo[-1], time.time() - t0))
+        os.makedirs(os.path.join(OUT, "beds"), exist_ok=True)
+        shutil.copy(os.path.join(w, "bed.dump"), os.path.join(OUT, "beds", host.lower() + ".dump"))
     return res
 
 
@@ -375,10 +396,12 @@ def main():
         for host, script, first, last, secs in settle(tmp):
             print("%-9s %-40s %5.1f s\n          first thermo: %s\n          last thermo:  %s"
                   % (host, script, secs, first.strip(), last.strip()))
+            render("dump", os.path.join(OUT, "beds", host.lower() + ".dump"), os.path.join(OUT, "bed_%s.png" % host.lower()),
+                   "--color", "height", "--title", "settled bed, %s (%s)" % (host, os.path.basename(script)))
         prog.done("step 3 (settling beds)")
         print("\n== 4. Moving grates with mixing analysis, mpirun -np 2 (validation/grate/run.sh --short) ==")
         grate = os.path.join(OUT, "grate")
-        env = dict(os.environ, TDEM_LIGGGHTS=LIG, WORKDIR=grate)
+        env = dict(os.environ, TDEM_LIGGGHTS=LIG, WORKDIR=grate, VTKOUT="0.05")  # bars every 0.05 s: frames
         t0 = time.time()
         r = subprocess.run(["sh", os.path.join(HERE, "validation", "grate", "run.sh"), "--short"], env=env,
                            capture_output=True, text=True)
@@ -387,6 +410,9 @@ def main():
             sys.stderr.write(r.stderr[-3000:])
             raise SystemExit("showcase: the grate scenes failed")
         print("grate scenes: %.0f s; VTK files (bars and particles) and plots in %s" % (time.time() - t0, grate))
+        render("grate", grate, "fwd3d", OUT, "--frames", "--title", "forward-acting grate, 3D (colour: depth D)")
+        render("grate", grate, "fwd2d", OUT, "--title", "forward-acting grate, 2D (colour: depth D)")
+        render("grate", grate, "rev3d", OUT, "--color", "speed", "--title", "reverse-acting grate, 3D (colour: speed)")
         prog.done("step 4 (grates)")
         print("\n== 5. Rigid clumps poured into a box, mpirun -np 2 (input_scripts/liggghts/clumps_pour.in) ==")
         first, last, secs, nbody, nsph, worst, top = clumps()
@@ -397,8 +423,11 @@ def main():
               "                                                        last:  %s\n"
               "  largest change of a distance inside a clump: %.1e m; highest sphere centre %.4f m; dumps in %s"
               % (nbody, nsph, secs, first.strip(), last.strip(), worst, top, os.path.join(OUT, "clumps")))
+        render("dump", os.path.join(OUT, "clumps", "dump.clumps"), os.path.join(OUT, "clumps.png"), "--color", "body",
+               "--title", "2000 clumps poured into a box (colour: body)")
         prog.done("step 5 (clumps)")
-        print("\nOutput in %s" % OUT)
+        print("\nOutput in %s; pictures: %s" % (OUT, ", ".join(sorted(f for f in os.listdir(OUT)
+                                                                 if f.endswith((".png", ".gif"))))))
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 

@@ -2,7 +2,11 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Analysis of the grate scenes of validation/grate/run.sh (issue 7, physics_reference.md section 7).
 
-    analyse.py WORKDIR RESULTS [--short]
+    analyse.py WORKDIR RESULTS [--short | --long]
+
+--long: the large grates of run.sh --long instead (prefixes fwd2dL, fwd3dL: 8 rows, a bed of more than
+2000 particles), with the checks that the bed holds at least 2000 particles and that the run is
+stationary (the two halves of the evaluation window agree: holdup and P' within 10 %, Q' within 15 %).
 
 WORKDIR holds the outputs of the scenes input_scripts/liggghts/grate_{forward_2d,forward_3d,reverse_3d}.in
 (prefixes fwd2d, fwd3d, rev3d) and of the stopped-grate run (prefix stop3d): <tag>_series.txt,
@@ -42,6 +46,10 @@ CASES = [  # tag, label, dimension, declination [deg], colour
     ("fwd2d", "forward 2D", 2, 3.0, "tab:blue"),
     ("fwd3d", "forward 3D", 3, 3.0, "tab:green"),
     ("rev3d", "reverse 3D", 3, 12.0, "tab:red"),
+]
+LONG_CASES = [  # run.sh --long: 8 rows; 2D disks of 4.5 and 5.5 mm; 3D 120 mm periodic width
+    ("fwd2dL", "forward 2D, 8 rows", 2, 3.0, "tab:blue"),
+    ("fwd3dL", "forward 3D, 8 rows", 3, 3.0, "tab:green"),
 ]
 STOPS = [("stop3d", "forward 3D, standing grate (stroke 0)", 3, 3.0, "tab:gray"),
          ("stop3d_dt1", "forward 3D, standing grate, dt/2", 3, 3.0, "k")]
@@ -213,8 +221,10 @@ class Case:
         self.tlast = tlast
         self.n_seen = len(first)
 
-    def q_window(self, t0, t1, xlo=XLO, xhi=XHI):
+    def q_window(self, t0, t1, xlo=None, xhi=None):
         """Q' pooled over the increments that start in [t0, t1) at x in [xlo, xhi) (default: all regions)."""
+        xlo = XLO if xlo is None else xlo
+        xhi = XHI if xhi is None else xhi
         te, xe, dD, dt = self.inc
         m = (te >= t0 - 1e-12) & (te < t1 - 1e-12) & (xe >= xlo) & (xe < xhi)
         return dD[m].sum() / dt[m].sum() if dt[m].sum() > 0 else float("nan")
@@ -265,13 +275,28 @@ class Case:
             return s / n
 
 
+def halves(c):
+    """(holdup, P', Q') means over the two halves of the evaluation window [t0, tend]."""
+    tm = 0.5 * (c.t0 + c.tend)
+    a = (c.t >= c.t0 - 1e-12) & (c.t < tm)
+    b = c.t >= tm
+    return ((float(np.mean(c.atoms[a])), float(np.mean(c.atoms[b]))), (float(np.mean(c.P[a])), float(np.mean(c.P[b]))),
+            (c.q_window(c.t0, tm), c.q_window(tm, 1e9)))
+
+
 def main():
+    global XHI, NBINS
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
     short = "--short" in sys.argv
+    long_ = "--long" in sys.argv
     work, results = args[0], args[1]
     os.makedirs(results, exist_ok=True)
-    cases = [Case(work, spec) for spec in CASES]
-    stops = [Case(work, spec) for spec in STOPS if os.path.exists(os.path.join(work, spec[0] + "_series.txt"))]
+    if long_:  # the geometry of the scene files for rows = 8 (their variables binhi, nbins)
+        GRATE["rows"] = 8
+        XHI, NBINS = 0.115 + 7 * 0.085, 16
+    cases = [Case(work, spec) for spec in (LONG_CASES if long_ else CASES)]
+    stops = [] if long_ else [Case(work, spec) for spec in STOPS
+                              if os.path.exists(os.path.join(work, spec[0] + "_series.txt"))]
     checks = []
 
     def check(ok, what):
@@ -359,7 +384,15 @@ def main():
             f.write("| %s | %.4g | %.4g | %.3f | %.1f | %.3g | %.4f | %d | %d | %s |\n" % (
                 r[0], r[1], r[2], r[3], 1e3 * r[4], 1e3 * r[5], r[6], r[7], r[8], r[9]))
         f.write("\nIn 2D each disk has the mass of the sphere of its diameter; the mass flow is that of one layer "
-                "of disks (the 3D scenes: 60 mm periodic width).\n")
+                "of disks (the 3D scenes: %s periodic width).\n" % ("120 mm" if long_ else "60 mm"))
+        if long_:
+            f.write("\nStationarity: the evaluation window split in two halves (holdup = particles in the box, "
+                    "P' from the series, Q' from the dumped D):\n\n| scene | holdup 1st / 2nd half | P' 1st / 2nd "
+                    "[m/s] | Q' 1st / 2nd [1/s] |\n|---|---|---|---|\n")
+            for c in cases:
+                h, p_, q = halves(c)
+                f.write("| %s | %.0f / %.0f | %.4g / %.4g | %.4g / %.4g |\n" % (c.label, h[0], h[1], p_[0], p_[1],
+                                                                               q[0], q[1]))
 
     # consistency: Q' recomputed from the dumped D = the fix's Q' accumulated from t = 0
     for c in cases:
@@ -392,6 +425,15 @@ def main():
         check(p2 > 2 * p1, "standing grate: the residual P' is a time-step effect (rolling-friction chatter): "
               "%.3g m/s at dt = %.3g s, %.3g m/s at dt = %.3g s (ratio %.2f > 2)"
               % (p2, stops[0].dt, p1, stops[1].dt, p2 / p1))
+    if long_:
+        for c in cases:
+            h, p_, q = halves(c)
+            rel = lambda a: abs(a[1] - a[0]) / max(abs(a[0]), abs(a[1]), 1e-300)  # noqa: E731
+            check(min(h) >= 2000, "%s: the bed holds at least 2000 particles (mean holdup %.0f / %.0f in the two "
+                  "halves of the evaluation window)" % (c.label, h[0], h[1]))
+            check(rel(h) <= 0.10 and rel(p_) <= 0.10 and rel(q) <= 0.15,
+                  "%s: stationary over the evaluation window: holdup %.1f %%, P' %.1f %% (<= 10 %%), Q' %.1f %% "
+                  "(<= 15 %%) between its halves" % (c.label, 100 * rel(h), 100 * rel(p_), 100 * rel(q)))
     with open(os.path.join(results, "checks.txt"), "w") as f:
         for ok, what in checks:
             f.write("%s  %s\n" % ("PASS" if ok else "FAIL", what))
