@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: fix tdem/integrate (see fix_tdem_integrate.h and docs/lammps.md).
+// tdem for LAMMPS: fix tdem/integrate (see fix_tdem_integrate.h and docs/lammps/fix_tdem_integrate.md).
 
 #include "fix_tdem_integrate.h"
 

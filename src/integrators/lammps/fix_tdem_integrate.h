@@ -19,7 +19,7 @@
 // atoms that exist at the run start (after every fix has added its set-up force, so the start
 // does not depend on the order of the fix commands), in final_integrate for atoms that appear
 // during a run (fix pour, deposit ...). A later `run` continues the history; a change of the
-// time step re-starts every atom with a warning. See docs/lammps.md, "fix tdem/integrate".
+// time step re-starts every atom with a warning. See docs/lammps/fix_tdem_integrate.md.
 
 #ifdef FIX_CLASS
 // clang-format off

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: fix tdem/wall/gran (see fix_tdem_wall_gran.h and docs/lammps.md).
+// tdem for LAMMPS: fix tdem/wall/gran (see fix_tdem_wall_gran.h and docs/lammps/fix_tdem_wall_gran.md).
 
 #include "fix_tdem_wall_gran.h"
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: pair style tdem/gran (see pair_tdem_gran.h and docs/lammps.md).
+// tdem for LAMMPS: pair style tdem/gran (see pair_tdem_gran.h and docs/lammps/pair_tdem_gran.md).
 //
 // Bookkeeping follows the LAMMPS conventions for granular pair styles with history: a
 // FixNeighHistory stores the tangential block (3 values: the spring elongation of

@@ -53,7 +53,7 @@ const StyleEntry *style_table()
 
 std::string style_listing()
 {
-  std::string out = "\n* tdem styles (tdem-lammps adds them to the lists above; docs/lammps.md):\n";
+  std::string out = "\n* tdem styles (tdem-lammps adds them to the lists above; one page per style in docs/lammps/):\n";
   const struct {
     StyleKind kind;
     const char *title;

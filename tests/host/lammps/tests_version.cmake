@@ -8,6 +8,11 @@ foreach(t equivalence granular_models restitution parallel_restart plugin exampl
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_${t}.py ${_args})
   set_tests_properties(${_pfx}.${t} PROPERTIES LABELS ${_lbl} TIMEOUT 600)
 endforeach()
+# the style pages of docs/lammps/: sections in the manual's order, links, every example runs
+add_test(NAME ${_pfx}.doc_examples
+         COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/../test_doc_examples.py ${_args} --engine lammps
+                 --docs ${PROJECT_SOURCE_DIR}/docs)
+set_tests_properties(${_pfx}.doc_examples PROPERTIES LABELS ${_lbl} TIMEOUT 600)
 # host vs the single-collision harness tdem-collide (every normal law, wall and pair impacts)
 if(TARGET tdem-collide)
   add_test(NAME ${_pfx}.harness_agreement

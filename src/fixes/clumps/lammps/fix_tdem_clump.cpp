@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: fix tdem/clump (see fix_tdem_clump.h and docs/clumps_lammps.md).
+// tdem for LAMMPS: fix tdem/clump (see fix_tdem_clump.h and docs/lammps/fix_tdem_clump.md).
 
 #include "fix_tdem_clump.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LAMMPS: fix tdem/clump, rigid multi-sphere clumps of one template (issue 6,
-// physics_reference.md section 6, core src/fixes/clumps/). See docs/clumps_lammps.md.
+// physics_reference.md section 6, core src/fixes/clumps/). See docs/lammps/fix_tdem_clump.md.
 //
 //   fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO]
 //       [integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson]

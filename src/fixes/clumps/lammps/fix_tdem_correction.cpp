@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: fix tdem/correction (see fix_tdem_correction.h and docs/clumps_lammps.md).
+// tdem for LAMMPS: fix tdem/correction (see fix_tdem_correction.h and docs/lammps/fix_tdem_clump.md).
 #include "fix_tdem_correction.h"
 
 #include "contact/multi_contact/multi_contact.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LAMMPS: fix tdem/correction, the multiple-contact correction of fix tdem/clump for bodies
-// that another fix integrates (issue 20; docs/clumps_lammps.md, "Multiple-contact correction"):
+// that another fix integrates (issue 20; docs/lammps/fix_tdem_clump.md, "Multiple-contact correction"):
 //
 //   fix ID group tdem/correction count|overlap|local_mass bodies FIXID
 //

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LAMMPS: fix tdem/grate (see fix_tdem_grate.h and docs/grate_lammps.md). The
+// tdem for LAMMPS: fix tdem/grate (see fix_tdem_grate.h and docs/lammps/fix_tdem_grate.md). The
 // constructor (arguments and geometry) is in fix_tdem_grate_setup.cpp.
 
 #include "fix_tdem_grate.h"

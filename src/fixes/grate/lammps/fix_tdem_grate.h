@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LAMMPS: fix tdem/grate, a stepped grate of fixed and moving bar rows (issue 7,
-// physics_reference.md 7.1, docs/grate.md for the core, docs/grate_lammps.md for the syntax).
+// physics_reference.md 7.1, docs/grate.md for the core, docs/lammps/fix_tdem_grate.md for the syntax).
 //
 //   fix ID group tdem/grate <law: as fix tdem/wall/gran> <grate keywords> <motion keywords>
 //       [vtk N prefix] [max_contacts K]

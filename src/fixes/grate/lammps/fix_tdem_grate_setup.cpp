@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LAMMPS: fix tdem/grate, its constructor: the arguments, their checks and the
-// geometry they give (see fix_tdem_grate.h and docs/grate_lammps.md). The time stepping, the
+// geometry they give (see fix_tdem_grate.h and docs/lammps/fix_tdem_grate.md). The time stepping, the
 // per-atom state and restart are in fix_tdem_grate.cpp.
 
 #include "fix_tdem_grate.h"
