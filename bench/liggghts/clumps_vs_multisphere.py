@@ -125,7 +125,7 @@ def main():
           "inserts with its own random placement), so the pour agrees statistically only. The mass per clump is "
           "the union of the four spheres in both (tdem: column integration; multisphere: Monte Carlo). The "
           "granular styles see the body mass as m* with `fix multisphere` and the sphere's share with `fix "
-          "tdem/clump` in LIGGGHTS (docs/clumps_liggghts.md), so the Hertz damping differs."]
+          "tdem/clump` in LIGGGHTS (docs/liggghts/fix_tdem_clump.md), so the Hertz damping differs."]
     os.makedirs(os.path.dirname(a.out), exist_ok=True)
     with open(a.out, "w") as f:
         f.write("\n".join(md) + "\n")

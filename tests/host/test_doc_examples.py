@@ -117,6 +117,104 @@ neighbor 0.0005 bin
 timestep 1e-6
 """
 
+LIG_GRANULAR = """atom_style granular
+atom_modify map array
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region box block 0 0.01 0 0.01 0 0.01 units box
+create_box 1 box
+create_atoms 1 single 0.003 0.003 0.0012 units box
+create_atoms 1 single 0.0049 0.003 0.0012 units box
+create_atoms 1 single 0.007 0.007 0.004 units box
+create_atoms 1 single 0.003 0.007 0.006 units box
+set group all diameter 0.002 density 2500
+velocity all set 0.01 0 -0.2 units box
+neighbor 0.0005 bin
+neigh_modify delay 0
+fix grav all gravity 9.81 vector 0 0 -1
+timestep 1e-6
+"""
+LIG_PAIR = """fix d_e  all property/global coefficientRestitution peratomtypepair 1 0.7
+fix d_tc all property/global contactTime peratomtypepair 1 1e-4
+fix d_ka all property/global tangentialStiffnessRatio peratomtypepair 1 0.3
+fix d_mu all property/global coefficientFriction peratomtypepair 1 0.5
+pair_style gran model tdem/lsd tangential tdem/cundall_strack parameters restitution
+pair_coeff * *
+"""
+
+LIG_CLUMP = """atom_style hybrid sphere molecular
+atom_modify map array
+boundary p p f
+newton off
+communicate single vel yes
+units si
+region box block 0 0.03 0 0.03 0 0.04 units box
+create_box 1 box
+region ins block 0 0.03 0 0.03 0.004 0.035 units box
+neighbor 0.001 bin
+neigh_modify delay 0 exclude molecule all
+fix grav all gravity 9.81 vector 0 0 -1
+timestep 5e-6
+"""
+LIG_MULTISPHERE = """atom_style sphere
+atom_modify map array sort 0 0
+boundary f f f
+newton off
+communicate single vel yes
+units si
+region b block -0.1 0.1 -0.1 0.1 -0.1 0.1 units box
+create_box 1 b
+neighbor 0.001 bin
+neigh_modify delay 0
+fix m_e  all property/global coefficientRestitution peratomtypepair 1 0.8
+fix m_tc all property/global contactTime peratomtypepair 1 1e-4
+fix m_ka all property/global tangentialStiffnessRatio peratomtypepair 1 0.0
+fix m_mu all property/global coefficientFriction peratomtypepair 1 0.0
+pair_style gran model tdem/lsd tangential no_history surface tdem/clump parameters restitution
+pair_coeff * *
+timestep 1e-6
+fix w all wall/gran model tdem/lsd tangential no_history surface tdem/clump primitive type 1 zplane 0.0 parameters restitution
+fix pts all particletemplate/multisphere 15485863 atom_type 1 density constant 2500 nspheres 2 ntry 1000000 spheres -0.00625 0 0 0.005 0.00625 0 0 0.005 type 1
+fix pdd all particledistribution/discrete 32452843 1 pts 1.0
+region ins block -0.01 0.01 -0.001 0.001 0.0052 0.0055 units box
+fix ins all insert/pack seed 49979687 distributiontemplate pdd vel constant 0 0 -0.5 insert_every once overlapcheck yes region ins particles_in_region 1 ntry_mc 1000
+fix ms all multisphere
+"""
+LIG_GRATE = """atom_style granular
+atom_modify map array
+boundary f p f
+newton off
+communicate single vel yes
+units si
+region box block -0.05 0.45 -0.05 0.05 -0.2 0.1 units box
+create_box 1 box
+create_atoms 1 single 0.03 0.0 0.03 units box
+create_atoms 1 single 0.05 0.01 0.03 units box
+set group all diameter 0.004 density 2500
+neighbor 0.001 bin
+neigh_modify delay 0
+fix grav all gravity 9.81 vector 0 0 -1
+timestep 1e-6
+"""
+LIG_MIXING = """atom_style granular
+atom_modify map array
+boundary p p f
+newton off
+communicate single vel yes
+units si
+region box block 0 0.01 0 0.01 0 0.01 units box
+create_box 1 box
+lattice sc 0.0025
+region fill block 0 0.01 0 0.01 0.001 0.006 units box
+create_atoms 1 region fill
+set group all diameter 0.002 density 2500
+neighbor 0.0005 bin
+neigh_modify delay 0
+timestep 1e-6
+"""
+
 # scene: (head, add a default pair style if the example has none, add nve/sphere if it has no integrator)
 SCENES = {
     "granular": (GRANULAR, True, True),
@@ -125,6 +223,12 @@ SCENES = {
     "stock_rigid": (STOCK_RIGID, True, False),
     "grate": (GRATE, True, True),
     "mixing": (MIXING, True, True),
+    "lig_granular": (LIG_GRANULAR, True, True),
+    "lig_granular_noint": (LIG_GRANULAR, True, False),
+    "lig_clump": (LIG_CLUMP, True, False),
+    "lig_multisphere": (LIG_MULTISPHERE, False, False),
+    "lig_grate": (LIG_GRATE, True, True),
+    "lig_mixing": (LIG_MIXING, True, True),
 }
 
 
@@ -138,8 +242,8 @@ def blocks(text, lang):
 def scene_input(scene, example):
     head, want_pair, want_int = SCENES[scene]
     text = head
-    if want_pair and "pair_style" not in example:
-        text += PAIR
+    if want_pair and "pair_style" not in example and "property/global" not in example:
+        text += LIG_PAIR if scene.startswith("lig_") else PAIR
     text += example.replace("&\n", " ") + "\n"
     if want_int and "tdem/integrate" not in example and "tdem/clump" not in example:
         text += "fix nve all nve/sphere\n"

@@ -846,7 +846,7 @@ def main():
 
 
 # ====================================================================== LIGGGHTS section (issue 6)
-# The multiple-contact correction of fix tdem/clump in LIGGGHTS (docs/clumps_liggghts.md):
+# The multiple-contact correction of fix tdem/clump in LIGGGHTS (docs/liggghts/fix_tdem_clump.md):
 #   study.py --liggghts PATH/tdem-liggghts
 # writes results/liggghts_correction.md, .json and .png. Self-contained (its own inputs and closed forms):
 #   flat     rods of N = 1, 2, 4, 8 spheres flat on a tdem/lsd wall, per-contact k, gamma from the BODY mass for

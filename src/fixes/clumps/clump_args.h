@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem: the arguments of `fix ID group tdem/clump ...`, the same in LAMMPS and LIGGGHTS
-// (docs/lammps/fix_tdem_clump.md, docs/clumps_liggghts.md), parsed and turned into a template without a
+// (docs/lammps/fix_tdem_clump.md, docs/liggghts/fix_tdem_clump.md), parsed and turned into a template without a
 // host. Errors are std::invalid_argument whose text starts with the fix's `where` ("fix c
 // tdem/clump") and names the keyword, the value and what is allowed; the hosts pass it to their
 // error->all.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LIGGGHTS 3.8: fix tdem/integrate (see fix_tdem_integrate.h and docs/liggghts.md).
+// tdem for LIGGGHTS 3.8: fix tdem/integrate (see fix_tdem_integrate.h and docs/liggghts/fix_tdem_integrate.md).
 #include "fix_tdem_integrate.h"
 #include "integrators/fix_args.h"
 #include "fixes/liggghts/style_maps.h"

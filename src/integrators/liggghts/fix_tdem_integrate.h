@@ -30,7 +30,7 @@
 // and wall/gran add theirs in their own setup(), which may come after this fix's), for atoms
 // inserted during a run (fix insert/pack ...) the force of the step they appeared in (atom->f
 // is not cleared before initial_integrate). A change of the time step re-starts every atom with
-// a warning. See docs/liggghts.md, "fix tdem/integrate".
+// a warning. See docs/liggghts/fix_tdem_integrate.md.
 #pragma once
 
 #include <cstdio>

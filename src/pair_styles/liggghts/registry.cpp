@@ -263,7 +263,7 @@ std::string style_listing() {
     else c.push_back(s.substr(8));
   }
   fixes.clear();
-  return "\n* tdem: tdem-liggghts adds these to the lists above (docs/liggghts.md)\n" +
+  return "\n* tdem: tdem-liggghts adds these to the lists above (one page per model and style in docs/liggghts/)\n" +
          block("Contact models (tdem), pair_style gran / fix wall/gran model", tdem_of(n.normal)) +
          block("Tangential models (tdem), tangential", tdem_of(n.tangential)) +
          block("Surface models (tdem), surface", tdem_of(n.surface)) +

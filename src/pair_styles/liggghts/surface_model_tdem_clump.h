@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: surface model `tdem/clump`, through which fix tdem/clump
 // (src/fixes/clumps/liggghts) applies its multiple-contact correction (src/contact/multi_contact/multi_contact.h,
-// docs/clumps_liggghts.md) to the contacts of a pair style or wall fix that asks for it:
+// docs/liggghts/fix_tdem_clump.md) to the contacts of a pair style or wall fix that asks for it:
 //
 //   pair_style gran model M tangential T surface tdem/clump
 //   fix ID all wall/gran model M tangential T surface tdem/clump primitive ...

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: the link through which fix tdem/clump (src/fixes/clumps/liggghts) applies its
-// multiple-contact correction (src/contact/multi_contact/multi_contact.h, docs/clumps_liggghts.md) in the surface
+// multiple-contact correction (src/contact/multi_contact/multi_contact.h, docs/liggghts/fix_tdem_clump.md) in the surface
 // model `tdem/clump` (surface_model_tdem_clump.h).
 //
 // The fix publishes itself in `active` (one fix with a correction other than none at a time) and

@@ -257,7 +257,7 @@ def pour_scene(steps_a, steps_b=None, restart=None, read=None, nclump=40, correc
                shape="tetra 0.003 0.0045"):
     """A box with 40 tetra clumps poured onto the floor. steps_b: a second run after write_restart."""
     lines = [HEAD]
-    # the correction acts through the surface model tdem/clump (docs/clumps_liggghts.md)
+    # the correction acts through the surface model tdem/clump (docs/liggghts/fix_tdem_clump.md)
     surf = " surface tdem/clump" if correction and correction != "none" else ""
     if read:
         lines = ["read_restart %s" % read, "newton off", "communicate single vel yes"]
@@ -726,7 +726,7 @@ def part_corrcont(args, checks):
     """Continuity: a rod of 4 spheres, tilted by 2e-4 rad, dropped on the wall (no damping, e = 1): its
     contacts close one after another. The body's normal force F (sum of the spheres' fz, every step):
     with `overlap` the largest step-to-step change stays below 3 k v0 dt (a smooth overlap-driven change
-    of one contact of stiffness k at the approach speed v0; derivation in docs/clumps_liggghts.md),
+    of one contact of stiffness k at the approach speed v0; derivation in docs/liggghts/fix_tdem_clump.md),
     with `count` F jumps by about F/(N_c + 1) when a contact closes (detected: > 10 k v0 dt)."""
     r, rho, dist, v0, t1 = CORR_R, CORR_RHO, CORR_DIST, CORR_V, CORR_T
     n = 4

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-# fix tdem/clump for LIGGGHTS (module 'clump', src/fixes/clumps/liggghts; docs/clumps_liggghts.md): included by
+# fix tdem/clump for LIGGGHTS (module 'clump', src/fixes/clumps/liggghts; docs/liggghts/fix_tdem_clump.md): included by
 # tests/host/liggghts/CMakeLists.txt. One-sphere clumps = nve/sphere, torque-free asymmetric body,
 # flat-face impacts against the N-contact closed form, -np 2 = -np 1, -np 1/2/4/8 bitwise (ranks), restart,
 # insertion, bad input;

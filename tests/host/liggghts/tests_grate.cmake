@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
-# fix tdem/grate for LIGGGHTS (module 'grate', src/fixes/grate/liggghts; docs/grate_liggghts.md): included by
+# fix tdem/grate for LIGGGHTS (module 'grate', src/fixes/grate/liggghts; docs/liggghts/fix_tdem_grate.md): included by
 # tests/host/liggghts/CMakeLists.txt. Bar kinematics vs an independent model (fix vector, VTK corners,
 # the LIGGGHTS meshes' nodes and velocities), carrying by a moving bar (3D with and without rotation,
 # 2D disks), rebound with the law's e (tdem/lsd and stock hooke, identical to a primitive plane),

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LIGGGHTS 3.8: the multiple-contact correction (src/contact/multi_contact/, docs/clumps_liggghts.md)
+// tdem for LIGGGHTS 3.8: the multiple-contact correction (src/contact/multi_contact/, docs/liggghts/fix_tdem_clump.md)
 // for any kind of bodies, as fix tdem/clump (its own bodies) and fix tdem/correction (the bodies of
 // the stock fix multisphere) use it. The bodies are named by a CorrectionSides: which atoms (owned
 // and ghost) belong to a body and the body's key, the same on every rank. Per step, tally() counts

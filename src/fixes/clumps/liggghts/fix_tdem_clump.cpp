@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LIGGGHTS 3.8: fix tdem/clump (see fix_tdem_clump.h and docs/clumps_liggghts.md).
+// tdem for LIGGGHTS 3.8: fix tdem/clump (see fix_tdem_clump.h and docs/liggghts/fix_tdem_clump.md).
 #include "fix_tdem_clump.h"
 
 #include <mpi.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: fix tdem/clump, rigid multi-sphere clumps of one template (issue 6,
 // physics_reference.md section 6, core src/fixes/clumps/, shared host code src/fixes/clumps/host_bodies.h).
-// See docs/clumps_liggghts.md. Same syntax as the LAMMPS fix (src/fixes/clumps/lammps):
+// See docs/liggghts/fix_tdem_clump.md. Same syntax as the LAMMPS fix (src/fixes/clumps/lammps):
 //
 //   fix ID group tdem/clump template NAME (file PATH | shape SHAPE r d [n]) [density RHO]
 //       [integration columns|voxel|monte_carlo] [resolution N] [rotation splitting|explicit|richardson]
@@ -21,7 +21,7 @@
 // The force of the last final_integrate is kept (and written to restart files): a new run, or a run
 // after read_restart, starts with it instead of the set-up force, which in LIGGGHTS differs from it
 // (contact history) - so the fix continues `run N; run M` and restarts exactly as one run (as far as
-// the contact styles do: bitwise with tdem's laws; see docs/clumps_liggghts.md).
+// the contact styles do: bitwise with tdem's laws; see docs/liggghts/fix_tdem_clump.md).
 #pragma once
 
 #include <cstdint>
@@ -85,7 +85,7 @@ class FixTDEMClump : public Fix {
   std::unique_ptr<tdem::clumps::BodyVtk> vtk_;  // vtk N prefix (body_vtk.h), or none
   tdem::clumps::Clock clock_;  // simulation time of the VTK files (kept in the restart record)
 
-  // multiple-contact correction (docs/clumps_liggghts.md, "Multiple-contact correction"): the bodies
+  // multiple-contact correction (docs/liggghts/fix_tdem_clump.md, "Multiple-contact correction"): the bodies
   // of this fix as the sides of the shared LIGGGHTS correction (clump_correction.h)
   tdem::clumps::Correction correction_;
   struct Sides : CorrectionSides {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LIGGGHTS 3.8: fix tdem/correction (see fix_tdem_correction.h and docs/clumps_liggghts.md).
+// tdem for LIGGGHTS 3.8: fix tdem/correction (see fix_tdem_correction.h and docs/liggghts/fix_tdem_clump.md).
 #include "fix_tdem_correction.h"
 
 #include <cstdlib>

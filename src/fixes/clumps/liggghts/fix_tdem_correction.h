@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem for LIGGGHTS 3.8: fix tdem/correction, the multiple-contact correction of fix tdem/clump for
-// the bodies of the stock fix multisphere (issue 20; docs/clumps_liggghts.md, "Multiple-contact
+// the bodies of the stock fix multisphere (issue 20; docs/liggghts/fix_tdem_clump.md, "Multiple-contact
 // correction"). Same syntax as the LAMMPS fix (src/fixes/clumps/lammps/fix_tdem_correction.h):
 //
 //   fix ID group tdem/correction count|overlap|local_mass bodies FIXID

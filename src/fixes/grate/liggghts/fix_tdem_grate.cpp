@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem for LIGGGHTS 3.8: fix tdem/grate (see fix_tdem_grate.h, docs/grate_liggghts.md).
+// tdem for LIGGGHTS 3.8: fix tdem/grate (see fix_tdem_grate.h, docs/liggghts/fix_tdem_grate.md).
 #include "fix_tdem_grate.h"
 
 #include <mpi.h>
