@@ -254,12 +254,54 @@ def scene_input(scene, example):
     return text
 
 
+def tools(a):
+    """docs/tools/*.md: every command of the ```sh example blocks runs (exit 0) from the top of the
+    repository, with the tools of the directory of --tdem."""
+    bindir = os.path.dirname(os.path.abspath(a.tdem))
+    root = os.path.dirname(os.path.abspath(a.docs))
+    fails, n = [], 0
+    for p in sorted(glob.glob(os.path.join(a.docs, "tools", "*.md"))):
+        text = open(p, encoding="utf-8").read()
+        name = os.path.basename(p)
+        heads = [h.strip() for h in re.findall(r"^## (.*)$", text, re.M)]
+        ok = [h.split()[0] for h in heads] == ["Syntax", "Examples", "Description", "Restart,", "Restrictions",
+                                               "Related", "Default"]
+        print("%s %s: sections %s" % ("PASS" if ok else "FAIL", name, " / ".join(heads)))
+        if not ok:
+            fails.append(name)
+        for link in re.findall(r"\]\(([^)#:]+\.md)(?:#[^)]*)?\)", text):
+            if not os.path.isfile(os.path.join(os.path.dirname(p), link)):
+                print("FAIL %s: link %s exists" % (name, link))
+                fails.append(link)
+        for block in blocks(text, "sh"):
+            for cmd in block.replace("\\\n", " ").split("\n"):
+                cmd = cmd.strip()
+                if not cmd or cmd.startswith("#"):
+                    continue
+                tool = cmd.split()[0]
+                exe = os.path.join(bindir, tool)
+                with tempfile.TemporaryDirectory(prefix="tdem_docex_") as wd:
+                    r = subprocess.run(exe + cmd[len(tool):], shell=True, cwd=root, stdout=subprocess.PIPE,
+                                       stderr=subprocess.STDOUT, text=True, timeout=600,
+                                       env=dict(os.environ, TMPDIR=wd))
+                n += 1
+                ok = r.returncode == 0
+                print("%s %s: %s (exit %d)" % ("PASS" if ok else "FAIL", name, cmd[:100], r.returncode), flush=True)
+                if not ok:
+                    print(r.stdout[-1500:])
+                    fails.append(cmd)
+    print("%d commands, %d failure(s)" % (n, len(fails)))
+    return 1 if fails or n < 10 else 0
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--tdem", required=True)
     ap.add_argument("--engine", default="lammps")
     ap.add_argument("--docs", default=os.path.join(HERE, "..", "..", "docs"))
     a, _ = ap.parse_known_args()
+    if a.engine == "tools":
+        return tools(a)
     pages = sorted(glob.glob(os.path.join(a.docs, a.engine, "*.md")))
     fails = []
 

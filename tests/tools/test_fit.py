@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-2.0-or-later
 """Runs tdem-fit on synthetic impact data made by tdem-collide (an independent program) from
 known parameters, and checks that the fit returns those parameters, that chi^2 follows the
-definition of docs/fit.md (weighted means computed here), that the printed LIGGGHTS/LAMMPS lines
+definition of docs/tools/tdem-fit.md (weighted means computed here), that the printed LIGGGHTS/LAMMPS lines
 carry the fitted numbers, and that bad CSV input exits 2 with the line number. Exits non-zero
 on failure."""
 import argparse

@@ -8,7 +8,7 @@ turn by a word, NaN, +-inf, -1, 0, 1e300 and, for integers, 0.5; every option is
 value at the end of the line; every word option is given a wrong word; an unknown option is added.
 Each case must end in one of two ways:
   * exit status 2 with a line '<tool>: error: ...' naming the option (or the data key or column);
-  * a documented acceptance (docs/limits.md, docs/collide.md, docs/fit.md): exit 0 with its JSON, or
+  * a documented acceptance (docs/limits.md, docs/tools/tdem-collide.md, docs/tools/tdem-fit.md): exit 0 with its JSON, or
     for tdem-collide exit 1 with "ended": false (the contact did not end).
 Never a signal, never more than 30 s. Counts: crashes, hangs and silent acceptances must be 0."""
 import argparse
@@ -93,7 +93,7 @@ COLLIDE = [
 ]
 # documented acceptances beyond the class table: (case, option, value) -> expectation
 EXCEPT = {
-    ("hertz material", "--E2", "inf"): "accept",  # a rigid wall (docs/collide.md)
+    ("hertz material", "--E2", "inf"): "accept",  # a rigid wall (docs/tools/tdem-collide.md)
     ("continuous_potential x", "--x-cut", "inf"): "accept",  # no cut-off (the default)
     ("lsd steps", "--steps", "1e300"): "error",
 }

@@ -134,7 +134,7 @@ Integration and output:
 Output: JSON on stdout with law, method (integrated|analytic), end, parameters, m_eff, r_eff, v0, e, contact_time,
 max_overlap, max_force, residual_overlap, rebound_velocity, dissipated_energy, steps, dt,
 contact_time_estimate, ended, curve; oblique impacts add speed, angle, vn0, vt0, vs0, spin, beta,
-e_t, spin_after, rebound angles, psi1, psi2, stick/slip switches and rigid_body (docs/collide.md).
+e_t, spin_after, rebound angles, psi1, psi2, stick/slip switches and rigid_body (docs/tools/tdem-collide.md).
 Exit status 0 ok, 1 the contact did not end (e is null) or FILE could not be written, 2 bad input.
 )";
 

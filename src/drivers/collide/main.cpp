@@ -6,7 +6,7 @@
 // impacts) to stdout and optionally writes the force-overlap curve as CSV. With --scheme the
 // sphere-wall impact is integrated in whole steps with a chosen time-integration scheme from free
 // flight, as a host engine does it (src/collision/integrate_impact.h), optionally averaged over
-// the start phase of the contact (--phases). See docs/collide.md.
+// the start phase of the contact (--phases). See docs/tools/tdem-collide.md.
 // Exit status: 0 success, 1 the contact did not end / the curve could not be written,
 // 2 bad input (the message names the option, the value and the allowed range).
 #include "collide_unit.h"

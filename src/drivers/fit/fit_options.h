@@ -10,7 +10,7 @@ const char* kHelp = R"(tdem-fit: fit the tdem normal laws to measured impact dat
 
 Usage: tdem-fit DATA.csv [--law NAME[,NAME...]|all] [--json FILE] [options]
 
-DATA.csv (docs/fit.md): comment lines '# key: value' with material, source, notes,
+DATA.csv (docs/tools/tdem-fit.md): comment lines '# key: value' with material, source, notes,
 configuration (wall|pair), R1 [m], rho [kg/m^3], E [Pa], nu, E2, nu2 (partner or wall
 material; E2 may be inf), R2, rho2 (pair only); then a header line and rows with the columns
 v0,e and optionally e_err,tc,tc_err,fmax,fmax_err (SI units; empty cells allowed).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
-// tdem-fit: reading measured impact data (docs/fit.md, "CSV format").
+// tdem-fit: reading measured impact data (docs/tools/tdem-fit.md, "CSV format").
 //
 //   # material: steel (AISI 52100)
 //   # source: Author et al., Journal 1 (2000) 1-10, Fig. 3          (may be repeated)

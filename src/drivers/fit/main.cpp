@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem-fit: fits the coefficients of the tdem normal laws to measured e(v0) (and t_c(v0), peak
 // force where given) by weighted least squares over the single-collision solution, and prints
-// the coefficients, chi^2 and ready-to-paste input lines for LIGGGHTS and LAMMPS. See docs/fit.md.
+// the coefficients, chi^2 and ready-to-paste input lines for LIGGGHTS and LAMMPS. See docs/tools/tdem-fit.md.
 // Exit status: 0 success, 1 a fit failed / the JSON file could not be written, 2 bad input (the
 // message names the option or the file line, the value and the allowed range).
 #include "fit_one.h"
