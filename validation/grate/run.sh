@@ -13,9 +13,9 @@
 # --short: 1.5 s of grate time per scene (about a minute on 2 cores), written to WORKDIR/results;
 # without: 20 s per scene, the plots and table go to validation/grate/results/.
 # --long: the large grates instead: the forward scenes with 8 rows, in 2D with disks of 4.5 and 5.5 mm
-# (dscale 0.5) fed at 200 per second, in 3D 120 mm wide fed at 180 spheres per second, 40 s each, so
+# (dscale 0.5) fed at 240 per second, in 3D 120 mm wide fed at 180 spheres per second, 60 s each, so
 # that the bed holds more than 2000 particles and the mixing measures are stationary over the
-# evaluation window (20 - 40 s); results in validation/grate/results/long/ (about 30 min on 2 cores).
+# evaluation window (30 - 60 s); results in validation/grate/results/long/ (about 6 min on 2 cores).
 # Environment: TDEM_LIGGGHTS (executable, default build/bin/tdem-liggghts), VTKOUT (interval of the
 # VTK files in seconds of grate time, default 0.5; 0.05 gives the frames of an animation), WORKDIR (run directory,
 # default validation/grate/work), RESULTS (overrides the results directory), MPIRUN (default "mpirun
@@ -43,7 +43,7 @@ work=${WORKDIR:-$here/work}
 if [ "$short" = 1 ]; then
   tend=1.5; stop_n=60; stop_t=1.5; results=${RESULTS:-$work/results}; opt=--short
 elif [ "$short" = 2 ]; then
-  tend=${TEND:-40}; results=${RESULTS:-$here/results/long}; opt=--long
+  tend=${TEND:-60}; results=${RESULTS:-$here/results/long}; opt=--long
 else
   tend=20; stop_n=200; stop_t=4; results=${RESULTS:-$here/results}; opt=
 fi
@@ -73,7 +73,7 @@ run_scene() { # $1 scene file, $2 tag, further args: -var pairs
 }
 echo "grate scenes in $work (tend = $tend s per scene, 2 ranks, $exe)"
 if [ "$short" = 2 ]; then
-  run_scene grate_forward_2d.in fwd2dL -var tend "$tend" -var rows 8 -var dscale 0.5 -var rate 200 || exit 2
+  run_scene grate_forward_2d.in fwd2dL -var tend "$tend" -var rows 8 -var dscale 0.5 -var rate 240 || exit 2
   run_scene grate_forward_3d.in fwd3dL -var tend "$tend" -var rows 8 -var width 0.12 -var rate 180 || exit 2
   /usr/bin/python3 "$here/analyse.py" "$work" "$results" --long
   status=$?
