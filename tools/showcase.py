@@ -21,7 +21,8 @@
    mixing plots in build/showcase/grate.
 5. Rigid multi-sphere clumps (fix tdem/clump) on 2 MPI ranks: 2000 tetra-sphere and rod clumps
    inserted with random orientations and poured into a box (input_scripts/liggghts/clumps_pour.in);
-   particle dumps for ParaView in build/showcase/clumps.
+   particle dumps for ParaView and the bodies as VTK series (tetra_bodies.pvd, rod_bodies.pvd, read
+   back here with the VTK library) in build/showcase/clumps.
 
 Writes build/showcase/impact.csv and impact.png and prints the tables.
 Usage: python3 tools/showcase.py [BUILD_DIR]
@@ -268,6 +269,11 @@ def clumps(n_per_kind=1000, steps=24000):
         raise SystemExit("showcase: the dump line of clumps_pour.in moved")
     text = text.replace(marker, "dump            d all custom %d dump.clumps id mol type x y z radius\n"
                         "dump_modify     d format \"%%d %%d %%d %%.16g %%.16g %%.16g %%.16g\"" % (steps // 6))
+    # the bodies as VTK files (fix tdem/clump ... vtk N prefix): a .pvd series per clump kind
+    for kind, tail in (("tetra", "type 1 vel 0 0 -0.5"), ("rod", "type 2 vel 0 0 -0.5")):
+        if tail not in text:
+            raise SystemExit("showcase: the fix tdem/clump lines of clumps_pour.in moved")
+        text = text.replace(tail, "%s vtk %d %s_bodies" % (tail, steps // 6, kind), 1)
     with open(os.path.join(w, "in.clumps"), "w") as f:
         f.write(text)
     t0 = time.time()
@@ -306,6 +312,16 @@ def clumps(n_per_kind=1000, steps=24000):
     d0, d1 = distances(first), distances(last)
     worst = max(abs(a - b) for m in d0 for a, b in zip(d0[m], d1[m]))
     top = max(a[5] for a in last)
+    # the VTK series of the bodies, read back with the VTK library
+    sys.path.insert(0, os.path.join(HERE, "tests", "host"))
+    import vtk_read
+    for kind in ("tetra", "rod"):
+        series = vtk_read.read_pvd(os.path.join(w, kind + "_bodies.pvd"))
+        d = vtk_read.read_dataset(series[-1][1])
+        print("  %s_bodies.pvd: %d files up to t = %.3g s; the last holds %d bodies, %d spheres" % (
+            kind, len(series), series[-1][0], len(d["cells"]), d["npoints"]))
+        if len(series) != 7 or len(d["cells"]) != n_per_kind:
+            raise SystemExit("showcase: the VTK series %s_bodies.pvd is not complete" % kind)
     return thermo[0], thermo[-1], secs, len(d1), len(last), worst, top
 
 
