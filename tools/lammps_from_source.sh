@@ -93,7 +93,9 @@ while kill -0 "$pid" 2>/dev/null; do
   ticks=$((ticks + 1))
   if [ $((ticks % 12)) = 0 ]; then
     pct="$(grep -oE '^\[ *[0-9]+%\]' "$deps_dir/lammps-$up-build.log" | tail -n 1 || true)"
-    log "building ... ${pct:-[  0%]} after $(($(date +%s) - start)) s"
+    el=$(($(date +%s) - start)); p="$(printf '%s' "$pct" | tr -dc '0-9')"
+    rem="?"; [ -n "$p" ] && [ "$p" -gt 0 ] && rem=$((el * (100 - p) / p))
+    log "building ... ${pct:-[  0%]} after $el s, about $rem s to go"
   fi
 done
 if ! wait "$pid"; then

@@ -168,7 +168,9 @@ while kill -0 "$bpid" 2>/dev/null; do
   ticks=$((ticks + 1))
   if [ $((ticks % 12)) = 0 ]; then
     pct="$(grep -oE '^\[ *[0-9]+%\]' "$build_dir/build.log" | tail -n 1 || true)"
-    log "building tdem ... ${pct:-[  0%]} after $(($(date +%s) - tb)) s"
+    el=$(($(date +%s) - tb)); p="$(printf '%s' "$pct" | tr -dc '0-9')"
+    rem="?"; [ -n "$p" ] && [ "$p" -gt 0 ] && rem=$((el * (100 - p) / p))
+    log "building tdem ... ${pct:-[  0%]} after $el s, about $rem s to go"
   fi
 done
 if ! wait "$bpid"; then

@@ -27,6 +27,9 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))), "tools"))
+from progress import Progress  # noqa: E402
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 SCRIPTS = os.path.join(ROOT, "input_scripts", "liggghts")
 FILES = ("clumps_vs_multisphere.in", "clumps_vs_multisphere_tdem.inc", "clumps_vs_multisphere_stock.inc")
@@ -83,9 +86,11 @@ def main():
             f.write(text)
         res = {0: [], 1: []}
         t0 = time.time()
+        prog = Progress(n=4 * a.rounds, label="runs")
         for rnd in range(a.rounds):
             for stock in ((0, 1, 1, 0) if rnd % 2 == 0 else (1, 0, 0, 1)):
                 res[stock].append(run_one(exe, wd, stock, a.n, a.steps))
+                prog.done("round %d %s" % (rnd + 1, "multisphere" if stock else "tdem/clump"))
         wall = time.time() - t0
     finally:
         shutil.rmtree(wd, ignore_errors=True)
