@@ -255,8 +255,8 @@ def scene_input(scene, example):
 
 
 def tools(a):
-    """docs/tools/*.md: every command of the ```sh example blocks runs (exit 0) from the top of the
-    repository, with the tools of the directory of --tdem."""
+    """docs/tools/*.md: every command of the ```sh example blocks runs (exit 0) in a scratch directory
+    that links the repository's validation/ and input_scripts/, with the tools of the directory of --tdem."""
     bindir = os.path.dirname(os.path.abspath(a.tdem))
     root = os.path.dirname(os.path.abspath(a.docs))
     fails, n = [], 0
@@ -280,8 +280,11 @@ def tools(a):
                     continue
                 tool = cmd.split()[0]
                 exe = os.path.join(bindir, tool)
+                # in a scratch directory that sees the repository's data (files the command writes stay there)
                 with tempfile.TemporaryDirectory(prefix="tdem_docex_") as wd:
-                    r = subprocess.run(exe + cmd[len(tool):], shell=True, cwd=root, stdout=subprocess.PIPE,
+                    for d in ("validation", "input_scripts"):
+                        os.symlink(os.path.join(root, d), os.path.join(wd, d))
+                    r = subprocess.run(exe + cmd[len(tool):], shell=True, cwd=wd, stdout=subprocess.PIPE,
                                        stderr=subprocess.STDOUT, text=True, timeout=600,
                                        env=dict(os.environ, TMPDIR=wd))
                 n += 1
