@@ -15,16 +15,15 @@ Arms (the law lines as bench/lammps/bench_laws.sh):
   pairs), hertz_tsuji, thornton, extended_hertz (-> stock_hertz)
 Method: ROUNDS rounds; a round is one tdem-lammps process that runs every arm twice, in a
 palindromic order (A B C ... C B A, the start rotated each round), so a linear drift of the machine
-cancels. Per run the CPU time of the timed loop (LAMMPS "Loop time" x "% CPU"); per round the cost
+cancels. Each arm runs WARM untimed steps first (the scene is perf.py's). Per run the CPU time of the timed loop (LAMMPS "Loop time" x "% CPU"); per round the cost
 ratio law/reference = (t1 + t2)_law / (t1 + t2)_reference. The table gives the median over the rounds
 and the range; the control row is the noise floor (a ratio inside the control's spread is not a
 difference). contacts/particle: at the end of each arm's runs (laws that change the flow change it).
 
-usage: bench/law_costs.py [--build DIR] [--steps S] [--rounds R] [--out FILE]
+usage: bench/law_costs.py [--build DIR] [--steps S] [--warm W] [--rounds R] [--out FILE]
 Prints a progress line per round with the remaining time, then the Markdown table (also to --out).
 """
 import argparse
-import glob
 import math
 import os
 import statistics
@@ -35,6 +34,8 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
+sys.path.insert(0, HERE)
+import perf  # noqa: E402  (the chute scene and the LAMMPS source tree)
 KT = 200000.0 * 2.0 / 7.0
 GKK = math.pi / 12.0 * 50.0 * 0.5  # G = m* gamma_n sqrt(R*), m* = (pi/6)/2, R* = 1/4
 TS = "tangential cundall_strack 0.8 0.5"
@@ -60,55 +61,43 @@ ARMS = [
     ("extended_hertz", "stock_hertz", tdem("normal extended_hertz 3e5 0 e_fit rational 1 1 0.2")),
 ]
 
-SCENE = """print           "arm {name}"
-units           lj
-atom_style      sphere
-boundary        p p fs
-newton          off
-comm_modify     vel yes
-read_data       data.chute
-{inter}
-neighbor        0.1 bin
-neigh_modify    every 1 delay 0
-timestep        0.0001
-group           bottom type 2
-group           active subtract all bottom
-neigh_modify    exclude group bottom bottom
-fix             1 all gravity 1.0 chute 26.0
-fix             2 bottom freeze
-fix             3 active nve/sphere
-compute         nc all contact/atom
-compute         2 all reduce ave c_nc
-thermo_style    custom step atoms c_2
-thermo          {steps}
-run             {steps}
-clear
-"""
+def arm_input(name, inter, steps, warm):
+    """One arm: the chute scene of perf.py (WARM untimed steps, then STEPS timed steps without set-up),
+    marked for parse() and followed by `clear`, so that all arms run in one process."""
+    return 'print "arm %s"\n' % name + perf.scene_input("chute", "lammps", inter, steps, warm, "data.chute") + "clear\n"
 
 
 def data_chute():
-    cands = glob.glob("/var/cache/tdem/debian-lammps-*/bench/data.chute") + \
-        glob.glob("/var/cache/tdem/lammps-*/source/bench/data.chute")
-    if os.environ.get("TDEM_LAMMPS_SOURCE"):
-        cands.insert(0, os.path.join(os.environ["TDEM_LAMMPS_SOURCE"], "bench", "data.chute"))
-    for c in cands:
-        if os.path.isfile(c):
-            return c
-    raise SystemExit("law_costs: no data.chute (run tools/setup.sh, or set TDEM_LAMMPS_SOURCE)")
+    path = os.path.join(perf.lammps_source(), "bench", "data.chute")
+    if not os.path.isfile(path):
+        raise SystemExit("law_costs: no data.chute (run tools/setup.sh, or set TDEM_LAMMPS_SOURCE)")
+    return path
 
 
 def parse(out):
-    """{arm: [(cpu seconds, contacts/particle), ...]} of one round's output."""
-    res, arm, nc = {}, None, None
+    """{arm: [(cpu seconds, contacts/particle), ...]} of one round's output: per arm the second of its
+    three runs (warm-up, timed, run 0), and the contacts per particle at the end of the timed run."""
+    res, arm, k, nc = {}, None, 0, float("nan")
     lines = out.splitlines()
     for i, l in enumerate(lines):
         w = l.split()
         if l.startswith("arm "):
-            arm = w[1]
-        elif w[:1] == ["Step"]:
-            vals = lines[i + 2].split() if i + 2 < len(lines) else []
-            nc = float(vals[2]) if len(vals) >= 3 else float("nan")
+            arm, k = w[1], 0
+        elif w[:1] == ["Step"] and "c_snc" in w:
+            last = lines[i + 1].split() if i + 1 < len(lines) else []
+            j = i + 1
+            while j < len(lines) and not lines[j].startswith("Loop time of"):
+                if lines[j].split():
+                    last = lines[j].split()
+                j += 1
+            try:
+                nc = float(last[w.index("c_snc")]) / float(last[w.index("Atoms")])
+            except (ValueError, IndexError):
+                nc = float("nan")
         elif l.startswith("Loop time of"):
+            k += 1
+            if k != 2:
+                continue
             wall = float(w[3])
             cpu_line = lines[i + 1] if i + 1 < len(lines) else ""
             pct = float(cpu_line.split("%")[0]) if "% CPU" in cpu_line else 100.0
@@ -121,6 +110,7 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--steps", type=int, default=500)
     ap.add_argument("--rounds", type=int, default=3)
+    ap.add_argument("--warm", type=int, default=50)
     ap.add_argument("--out", default="")
     a = ap.parse_args()
     exe = os.path.join(a.build, "bin", "tdem-lammps")
@@ -138,7 +128,7 @@ def main():
         k = (r * 5) % len(names)
         order = names[k:] + names[:k]
         order = order + order[::-1]
-        text = "".join(SCENE.format(name=n, inter=inter[n], steps=a.steps) for n in order)
+        text = "".join(arm_input(n, inter[n], a.steps, a.warm) for n in order)
         with open(os.path.join(work, "in.round"), "w") as f:
             f.write(text)
         p = subprocess.run([exe, "-in", "in.round", "-log", "none", "-echo", "none"], cwd=work,

@@ -176,6 +176,13 @@ run {warm}
 """
 
 
+def lammps_source():
+    """The LAMMPS source tree whose bench/data.chute the chute scenes read (TDEM_LAMMPS_SOURCE, else the
+    tree tools/setup.sh unpacks into /var/cache/tdem); "" if none."""
+    return os.environ.get("TDEM_LAMMPS_SOURCE") or (glob.glob("/var/cache/tdem/debian-lammps-*") +
+                                                    glob.glob("/opt/tdem-deps/lammps-*") + [""])[0]
+
+
 def make_bed(lmp, natoms, path, log):
     """A dense bed of about natoms spheres: an fcc packing with 3 % gaps between neighbours and random
     displacements of 1 % of a diameter, on a frozen base layer, settled under gravity (LAMMPS, stock
@@ -460,7 +467,7 @@ def main():
     for e in engines:
         if not os.access(exes[e], os.X_OK):
             sys.exit(f"no {exes[e]} (build first)")
-    src = os.environ.get("TDEM_LAMMPS_SOURCE") or (glob.glob("/var/cache/tdem/debian-lammps-*") + glob.glob("/opt/tdem-deps/lammps-*") + [""])[0]
+    src = lammps_source()
     chute = os.path.join(src, "bench", "data.chute")
     work = tempfile.mkdtemp(prefix="tdem_perf.")
     log = sys.stderr

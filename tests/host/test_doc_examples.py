@@ -22,6 +22,14 @@ import mpi_env  # noqa: E402
 
 SECTIONS = ["Syntax", "Examples", "Description", "Restart", "Restrictions", "Related commands", "Default"]
 
+# four spheres in the 1 cm box of the granular scenes, two of them touching
+FOUR_SPHERES = """create_atoms 1 single 0.003 0.003 0.0012 units box
+create_atoms 1 single 0.0049 0.003 0.0012 units box
+create_atoms 1 single 0.007 0.007 0.004 units box
+create_atoms 1 single 0.003 0.007 0.006 units box
+set group all diameter 0.002 density 2500
+velocity all set 0.01 0 -0.2 units box"""
+
 GRANULAR = """units si
 atom_style sphere
 atom_modify map array
@@ -30,16 +38,11 @@ newton off
 comm_modify vel yes
 region box block 0 0.01 0 0.01 0 0.01 units box
 create_box 1 box
-create_atoms 1 single 0.003 0.003 0.0012 units box
-create_atoms 1 single 0.0049 0.003 0.0012 units box
-create_atoms 1 single 0.007 0.007 0.004 units box
-create_atoms 1 single 0.003 0.007 0.006 units box
-set group all diameter 0.002 density 2500
-velocity all set 0.01 0 -0.2 units box
+%s
 neighbor 0.0005 bin
 fix grav all gravity 9.81 vector 0 0 -1
 timestep 1e-6
-"""
+""" % FOUR_SPHERES
 PAIR = "pair_style tdem/gran\npair_coeff * * normal lsd restitution 0.7 1e-4 tangential cundall_strack 0.8 0.5\n"
 
 CLUMP = """units si
@@ -125,17 +128,12 @@ communicate single vel yes
 units si
 region box block 0 0.01 0 0.01 0 0.01 units box
 create_box 1 box
-create_atoms 1 single 0.003 0.003 0.0012 units box
-create_atoms 1 single 0.0049 0.003 0.0012 units box
-create_atoms 1 single 0.007 0.007 0.004 units box
-create_atoms 1 single 0.003 0.007 0.006 units box
-set group all diameter 0.002 density 2500
-velocity all set 0.01 0 -0.2 units box
+%s
 neighbor 0.0005 bin
 neigh_modify delay 0
 fix grav all gravity 9.81 vector 0 0 -1
 timestep 1e-6
-"""
+""" % FOUR_SPHERES
 LIG_PAIR = """fix d_e  all property/global coefficientRestitution peratomtypepair 1 0.7
 fix d_tc all property/global contactTime peratomtypepair 1 1e-4
 fix d_ka all property/global tangentialStiffnessRatio peratomtypepair 1 0.3
