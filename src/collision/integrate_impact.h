@@ -64,6 +64,7 @@
 
 #include "collision/head_on.h"
 #include "collision/oblique.h"
+#include "contact/grid_correction.h"
 #include "integrators/schemes.h"
 
 namespace tdem {
@@ -159,6 +160,8 @@ struct ImpactOptions {
   long steps_per_contact = 100;
   int flush_steps = 10;            // free-flight steps after the contact before reading the results
   bool record = false;             // keep a sample (ObliqueSample) of every evaluation in contact
+  bool grid_correction = false;    // contact/grid_correction.h at the start and end steps (one-
+                                   // evaluation schemes; the multi-evaluation ones ignore it)
   long max_steps = 100000000;      // give up (ended = false)
   double max_contact_times = 100.0;
 };
@@ -167,6 +170,9 @@ struct ImpactResult : ObliqueResult {
   std::string scheme;
   double gap = 0.0;
   long contact_steps = 0;  // steps whose (final) evaluation was in contact
+  // with grid_correction, for a corrected contact: end - touch, both times as the correction
+  // estimated them (the touch tau before its first step, the end s after its last); NaN otherwise
+  double contact_time_interpolated = NAN;
   long evaluations = 0;    // force evaluations in all
 };
 
@@ -374,6 +380,77 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     double xi = 0.0, xi_dot = 0.0, fn = 0.0, ft_t = 0.0, vs_t = 0.0;
     bool sliding = false, contact = false;
   } last;
+  // grid correction (contact/grid_correction.h): the previous step's overlap, normal force and
+  // tangential force (the law's samples, before any correction)
+  struct GcPrev {
+    double xi = 0.0, fn = 0.0, k = 0.0, ft[3] = {0.0, 0.0, 0.0};
+    bool sliding = false;
+    bool on = false;  // this contact is corrected (its start was seen and resolved)
+  } gc_prev;
+  // The normal law's two parts at (xi, xi_dot) and their exponents in xi (a second evaluation at
+  // xi / 2): e = elastic, d = the rest (damping) of `f`.
+  struct PowerParts {
+    double e, p, d, q;
+  };
+  auto power_parts = [&](double xi, double xi_dot, double f, const NormalResult<double>& at) {
+    const NormalResult<double> hf = normal.force(0.5 * xi, xi_dot, m, R, false);
+    PowerParts pp;
+    pp.e = at.elastic;
+    pp.d = f - at.elastic;
+    pp.p = grid::power_exponent(at.elastic, hf.elastic, 1.0);
+    pp.q = grid::power_exponent(at.force - at.elastic, hf.force - hf.elastic, 0.0);
+    return pp;
+  };
+  // The extra acceleration of an end s after the previous step: the normal force from the power
+  // model through gc_prev (zero_overlap, at_zero_force = false) or linear to zero (a zero-force
+  // end), the tangential force linear from gc_prev.ft to the law's value at the end (its history
+  // of the previous step advanced by v_t s, the normal force there fe).
+  double gc_touch_time = NAN;
+  auto end_correction = [&](const Y& y, const TangentialLaw& law, double xi_dot, double s, bool at_zero_force,
+                            Acc& out) {
+    if (std::isfinite(gc_touch_time) && !std::isfinite(r.contact_time_interpolated))
+      r.contact_time_interpolated = r.steps * h + s - gc_touch_time;
+    double fn_x, fe;
+    if (at_zero_force) {
+      fe = 0.0;
+      fn_x = grid::end_extra(gc_prev.fn, gc_prev.fn, 1.0, 0.0, 0.0, s, h);
+    } else {
+      const NormalResult<double> np = normal.force(gc_prev.xi, xi_dot, m, R, false);
+      const PowerParts pp = power_parts(gc_prev.xi, xi_dot, gc_prev.fn, np);
+      fe = normal.force(0.0, xi_dot, m, R, false).force;
+      fn_x = grid::end_extra(gc_prev.fn, pp.e, pp.p, pp.d, pp.q, s, h);
+    }
+    double vt[3];
+    double xi_now;
+    geometry(y, xi_now, vt);
+    TangentialLaw at_end = law;
+    TangentialKin ke;
+    ke.n[0] = 0.0, ke.n[1] = 0.0, ke.n[2] = 1.0;
+    for (int i = 0; i < 3; ++i) ke.vt[i] = vt[i];
+    ke.spin_n = 0.5 * y.w()[2];
+    ke.dt = s;
+    ke.overlap = 0.0;
+    ke.meff = m;
+    ke.reff = R;
+    ke.fn = fe;
+    ke.kn = 0.0;
+    ke.gamman = 0.0;
+    double fte[3];
+    at_end.force(ke, true, fte);
+    double ft_x[3];
+    // sliding: the tangential force follows the normal force (mu F_n); sticking: linear to the
+    // law's value at the end
+    const bool follows = gc_prev.sliding && gc_prev.fn > 0.0;
+    for (int i = 0; i < 3; ++i)
+      ft_x[i] = follows ? gc_prev.ft[i] / gc_prev.fn * (fn_x + gc_prev.fn) - gc_prev.ft[i]
+                        : grid::end_extra(gc_prev.ft[i], gc_prev.ft[i] - fte[i], 1.0, fte[i], 0.0, s, h);
+    out.a[0] = ft_x[0] / m;
+    out.a[1] = ft_x[1] / m;
+    out.a[2] = (fn_x + ft_x[2]) / m;
+    out.al[0] = R * ft_x[1] / I;
+    out.al[1] = -R * ft_x[0] / I;
+    out.al[2] = 0.0;
+  };
   auto evaluate = [&](const Y& y, TangentialLaw& law, double incr_dt, const double* vt_incr, bool commit_normal,
                       Acc& out) {
     double xi;
@@ -381,17 +458,45 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     for (int k = 0; k < 3; ++k) out.a[k] = out.al[k] = 0.0;
     const double xi_dot = -y.v()[2];
     last.contact = xi > 0.0 || (xi == 0.0 && xi_dot > 0.0);
+    const bool gc = opt.grid_correction && incr_dt < 0.0;
     if (!last.contact) {
       last.xi = xi, last.xi_dot = -y.v()[2], last.fn = 0.0, last.ft_t = 0.0, last.vs_t = out.vt[0];
       last.sliding = false;
+      // (a zero-force law whose force ended before the overlap did has nothing left to correct)
+      if (gc && in_contact_prev && gc_prev.on && (normal.end() == ContactEnd::zero_overlap || gc_prev.fn > 0.0)) {
+        // the first step after a zero-overlap end: only the extra impulse of the end acts; the
+        // law at the end is its value at xi = 0+ with the rate now (its history still that of
+        // the last contact step)
+        end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, out);
+      }
+      if (gc) gc_prev = GcPrev{};
       return false;
     }
+    TangentialLaw fresh_or_prev = law;  // the tangential law before this step's update
+    double tau = -1.0;
+    NormalResult<double> half{}, touch{};
+    if (gc && !in_contact_prev) {
+      gc_prev.on = false;
+      tau = grid::touch_age(xi, xi_dot, h);
+      if (tau >= 0.0) {
+        // the law at xi / 2 and at the touch (xi = 0+), before this step commits its history
+        // (a hysteretic law would see xi / 2 as unloading after it)
+        half = normal.force(0.5 * xi, xi_dot, m, R, false);
+        touch = normal.force(0.0, xi_dot, m, R, false);
+      }
+    }
     const NormalResult<double> nr = normal.force(xi, xi_dot, m, R, commit_normal);
+    double pe = 1.0;
+    if (tau >= 0.0) {
+      pe = grid::power_exponent(nr.elastic, half.elastic, 1.0);
+      if (grid::resolved(nr.elastic, pe, nr.damping, xi, xi_dot, m, h)) gc_prev.on = true;
+      else tau = -1.0;  // too coarse: this contact is not corrected
+    }
     TangentialKin k;
     k.n[0] = 0.0, k.n[1] = 0.0, k.n[2] = 1.0;
     for (int i = 0; i < 3; ++i) k.vt[i] = out.vt[i];
     k.spin_n = 0.5 * y.w()[2];
-    k.dt = h;
+    k.dt = tau >= 0.0 ? tau : h;  // corrected: the spring starts at the touch
     k.overlap = xi;
     k.meff = m;
     k.reff = R;
@@ -412,12 +517,46 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       }
       sliding = law.force(k, false, ft);
     }
+    double fn_apply = nr.force, ft_apply[3] = {ft[0], ft[1], ft[2]};
+    if (gc) {
+      if (tau >= 0.0) {
+        // the start: the power model through the law now, from the touch tau ago; the
+        // tangential force linear from the law at the touch (fresh history, the normal force
+        // at xi = 0+) to the law now
+        gc_touch_time = (r.steps + 1) * h - tau;
+        const double pq = grid::power_exponent(nr.force - nr.elastic, half.force - half.elastic, 0.0);
+        fn_apply = grid::start_force(nr.elastic, pe, nr.force - nr.elastic, pq, tau, h);
+        TangentialKin k0 = k;
+        k0.overlap = 0.0;
+        k0.fn = touch.force;
+        double ft0[3];
+        fresh_or_prev.force(k0, false, ft0);
+        for (int i = 0; i < 3; ++i)
+          ft_apply[i] = sliding && nr.force > 0.0 ? ft[i] / nr.force * fn_apply
+                                                  : grid::start_force(ft[i] - ft0[i], 1.0, ft0[i], 0.0, tau, h);
+      } else if (gc_prev.on && in_contact_prev && normal.end() == ContactEnd::zero_force && gc_prev.fn > 0.0 &&
+                 nr.force <= 0.0) {
+        // a zero-force end inside the last step: where the unclipped force crossed zero (the
+        // law's parts now; a law that reports none when clipped: the tangent of the last step)
+        double s_end;
+        if (nr.elastic != 0.0 || nr.damping != 0.0)
+          s_end = grid::end_time(gc_prev.fn, nr.elastic + nr.damping * xi_dot, h);
+        else
+          s_end = grid::end_time(gc_prev.fn, gc_prev.fn + gc_prev.k * xi_dot * h, h);
+        Acc extra;
+        end_correction(y, fresh_or_prev, xi_dot, s_end, true, extra);
+        fn_apply += extra.a[2] * m;
+        for (int i = 0; i < 2; ++i) ft_apply[i] += extra.a[i] * m;
+      }
+      gc_prev.xi = xi, gc_prev.fn = nr.force, gc_prev.k = nr.stiffness, gc_prev.sliding = sliding;
+      for (int i = 0; i < 3; ++i) gc_prev.ft[i] = ft[i];
+    }
     // F = F_n n + F_t; torque -R n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
-    out.a[0] = ft[0] / m;
-    out.a[1] = ft[1] / m;
-    out.a[2] = (nr.force + ft[2]) / m;
-    out.al[0] = R * ft[1] / I;
-    out.al[1] = -R * ft[0] / I;
+    out.a[0] = ft_apply[0] / m;
+    out.a[1] = ft_apply[1] / m;
+    out.a[2] = (fn_apply + ft_apply[2]) / m;
+    out.al[0] = R * ft_apply[1] / I;
+    out.al[1] = -R * ft_apply[0] / I;
     out.al[2] = 0.0;
     last.xi = xi, last.xi_dot = xi_dot, last.fn = nr.force, last.ft_t = ft[0], last.vs_t = out.vt[0];
     last.sliding = sliding;

@@ -18,6 +18,7 @@ namespace collision {
 struct ImpactReference {
   double e = NAN, beta = NAN, e_t = NAN, omega = NAN;               // omega: spin after [1/s]
   double rebound_angle_com = NAN, rebound_angle_contact = NAN;      // [rad]
+  double contact_time = NAN;                                         // [s]
 };
 
 struct PhaseAverage {
@@ -25,6 +26,8 @@ struct PhaseAverage {
   int ended = 0;  // runs whose contact ended
   // mean |result - reference| over the phases (NaN where the reference is NaN or a run did not end)
   double e = NAN, beta = NAN, e_t = NAN, omega = NAN, rebound_angle_com = NAN, rebound_angle_contact = NAN;
+  // |contact time - reference|: the interpolated one of a corrected run, else contact_steps * dt
+  double contact_time = NAN;
   double mean_e = NAN;  // mean e itself
   double contact_steps = 0.0;  // mean
   double dt = 0.0;
@@ -45,7 +48,7 @@ PhaseAverage phase_averaged(NormalLaw& normal, TangentialLaw& tang, const Impact
   PhaseAverage pa;
   pa.phases = phases;
   pa.dt = dt;
-  double s[6] = {0, 0, 0, 0, 0, 0}, se = 0.0, sc = 0.0;
+  double s[6] = {0, 0, 0, 0, 0, 0}, se = 0.0, sc = 0.0, stc = 0.0;
   const double* refs[6] = {&ref.e, &ref.beta, &ref.e_t, &ref.omega, &ref.rebound_angle_com, &ref.rebound_angle_contact};
   for (int i = 0; i < phases; ++i) {
     ImpactSetup su = setup;
@@ -55,6 +58,8 @@ PhaseAverage phase_averaged(NormalLaw& normal, TangentialLaw& tang, const Impact
       ++pa.ended;
       const double got[6] = {res.e, res.beta, res.e_t, res.omega1, res.rebound_angle_com, res.rebound_angle_contact};
       for (int k = 0; k < 6; ++k) s[k] += std::fabs(got[k] - *refs[k]);
+      const double tc = std::isfinite(res.contact_time_interpolated) ? res.contact_time_interpolated : res.contact_time;
+      stc += std::fabs(tc - ref.contact_time);
       se += res.e;
       sc += static_cast<double>(res.contact_steps);
     }
@@ -64,6 +69,7 @@ PhaseAverage phase_averaged(NormalLaw& normal, TangentialLaw& tang, const Impact
     double* outs[6] = {&pa.e, &pa.beta, &pa.e_t, &pa.omega, &pa.rebound_angle_com, &pa.rebound_angle_contact};
     for (int k = 0; k < 6; ++k) *outs[k] = s[k] / phases;  // NaN reference -> NaN
     pa.mean_e = se / phases;
+    pa.contact_time = stc / phases;
     pa.contact_steps = sc / phases;
   }
   return pa;

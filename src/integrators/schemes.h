@@ -38,6 +38,10 @@
 //                       the engines' fix nve/sphere                                   (x+, v(1/2))
 //   velocity_verlet_sync  as velocity_verlet, but the force sees the synchronous Euler predictor
 //                       v_p = v + h a instead of the half-step velocity               (x+, v_p)
+//   velocity_verlet_ab2 as velocity_verlet, but the force sees the Adams-Bashforth 2 predictor
+//                       v_p = v + h (3a - a-)/2 (third order in v: with a damping force the
+//                       scheme keeps the small error constant of velocity Verlet with the exact
+//                       velocity; issue 22)                                          (x+, v_p)
 //   beeman              x+ = x + h v + h^2 (4a - a-)/6; predictor v_p = v + h (3a - a-)/2;
 //                       correct v+ = v + h (2a+ + 5a - a-)/6                          (x+, v_p)
 //   ab2 .. ab5          Adams-Bashforth k: x+ = x + h sum b_j v(n-j), v+ = v + h sum b_j a(n-j)
@@ -78,6 +82,7 @@ enum class Scheme : int {
   gear4,
   gear5,
   gear6,
+  velocity_verlet_ab2,  // appended: the restart records of fix tdem/integrate keep the code
   count
 };
 
@@ -108,6 +113,7 @@ inline const SchemeInfo& info(Scheme s) {
       {Scheme::gear4, "gear4", 3, 3, "Gear predictor-corrector, 4 values"},
       {Scheme::gear5, "gear5", 4, 4, "Gear predictor-corrector, 5 values"},
       {Scheme::gear6, "gear6", 5, 5, "Gear predictor-corrector, 6 values"},
+      {Scheme::velocity_verlet_ab2, "velocity_verlet_ab2", 2, 2, "velocity Verlet, force with v + h (3a - a-)/2"},
   };
   return table[static_cast<int>(s)];
 }
@@ -323,6 +329,26 @@ template <bool kPos> struct Kernel<Scheme::velocity_verlet_sync, kPos> {
   }
 };
 
+// history: the half-step velocity, a(n-1)
+template <bool kPos> struct Kernel<Scheme::velocity_verlet_ab2, kPos> {
+  static constexpr int history = 6;
+  static constexpr bool has_correct = true;
+  static void start(double*, double*, const Derivs& d, double* hist, double h) {
+    for (int k = 0; k < 3; ++k) hist[3 + k] = d.a(-h, k);
+  }
+  static void predict(double* x, double* v, const double* a, double* hist, double h) {
+    for (int k = 0; k < 3; ++k) {
+      hist[k] = v[k] + 0.5 * h * a[k];
+      if (kPos) x[k] += h * hist[k];
+      v[k] += 0.5 * h * (3.0 * a[k] - hist[3 + k]);
+      hist[3 + k] = a[k];
+    }
+  }
+  static void correct(double*, double* v, const double* a, double* hist, double h) {
+    for (int k = 0; k < 3; ++k) v[k] = hist[k] + 0.5 * h * a[k];
+  }
+};
+
 // history: a(n-1), a(n), v(n)
 template <bool kPos> struct Kernel<Scheme::beeman, kPos> {
   static constexpr int history = 9;
@@ -512,6 +538,7 @@ template <class F> decltype(auto) dispatch(Scheme s, F&& f) {
     TDEM_SCHEME_CASE(gear4)
     TDEM_SCHEME_CASE(gear5)
     TDEM_SCHEME_CASE(gear6)
+    TDEM_SCHEME_CASE(velocity_verlet_ab2)
 #undef TDEM_SCHEME_CASE
     default: break;
   }

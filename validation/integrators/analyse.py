@@ -88,8 +88,18 @@ for host in ("lammps", "liggghts"):
 measured_hosts = sorted(cost_src)
 
 
+GC = "+gc"  # the one-evaluation schemes with the time-grid correction (contact/grid_correction.h)
+
+
+def base(s):
+    return s[:-len(GC)] if s.endswith(GC) else s
+
+
 def ratio(s):
-    """Host cost ratio per particle-step (mean over the hosts that measured it), 1.0 if none."""
+    """Host cost ratio per particle-step (mean over the hosts that measured it), 1.0 if none. A
+    corrected scheme costs its scheme's ratio (the correction acts in the pair loop at the start and
+    end steps of contacts only; its overhead there is measured separately, bench/grid_correction)."""
+    s = base(s)
     v = [cost[s][h] for h in measured_hosts if s in cost and h in cost[s]]
     return (sum(v) / len(v), True) if v else (1.0, False)
 
@@ -100,7 +110,7 @@ def cost_per_contact(s, n):
 
 def cost_for(case, grid, key, s, target):
     """Cost per contact at which |error| reaches target (log-log interpolation in N), NaN if never
-    within N = 10 ... 320."""
+    within N = 5 ... 500."""
     pts = [(N, e) for N, e in series(case, grid, key).get(s, []) if e > 0]
     for (n1, e1), (n2, e2) in zip(pts, pts[1:]):
         if e1 <= target:
@@ -120,6 +130,11 @@ def fmt(x, spec=".1e"):
 palette = [plt.cm.tab20(i) for i in range(20)] + [plt.cm.tab20b(i) for i in range(0, 20, 4)]
 colors = {s: palette[i % len(palette)] for i, s in enumerate(schemes)}
 styles = {s: ("--" if s in MULTI else "-") for s in schemes}
+plain = [s for s in schemes if not s.endswith(GC)]
+SHOWN_GC = ["velocity_verlet", "velocity_verlet_sync", "velocity_verlet_ab2", "beeman"]
+for s in schemes:
+    if s.endswith(GC):
+        colors[s] = colors[base(s)]
 panels = [("headon_52", "integer", "err_e", "|Δe|, 5.2 head-on, dt = t_c/N (integer N)"),
           ("headon_52", "generic", "err_e", "|Δe|, 5.2 head-on, generic dt"),
           ("oblique_25", "generic", "err_e", "|Δe|, 8.5 oblique 25°, generic dt"),
@@ -132,6 +147,8 @@ panels = [("headon_52", "integer", "err_e", "|Δe|, 5.2 head-on, dt = t_c/N (int
 fig, axs = plt.subplots(3, 3, figsize=(17, 15))
 for ax, (case, grid, key, title) in zip(axs.flat, panels):
     for s, pts in series(case, grid, key).items():
+        if s.endswith(GC):
+            continue  # grid_correction.png
         pts = [(n, e) for n, e in pts if e > 0]
         if pts:
             ax.loglog([p[0] for p in pts], [p[1] for p in pts], styles[s], marker="o", ms=3, color=colors[s], label=s)
@@ -157,9 +174,14 @@ fronts = {}
 for ax, (case, grid, key, title) in zip(axs, pareto_panels):
     allpts = []
     for s, pts in series(case, grid, key).items():
+        if s.endswith(GC) and base(s) not in SHOWN_GC:
+            continue
         xs = [(cost_per_contact(s, n), e) for n, e in pts if e > 0]
         allpts += [(c, e, s) for c, e in xs]
-        ax.loglog([p[0] for p in xs], [p[1] for p in xs], styles[s], marker="o", ms=3, color=colors[s], label=s)
+        if s.endswith(GC):  # the corrected curves: thick, with squares
+            ax.loglog([p[0] for p in xs], [p[1] for p in xs], "-", marker="s", ms=4, lw=2.2, color=colors[s], label=s)
+        else:
+            ax.loglog([p[0] for p in xs], [p[1] for p in xs], styles[s], marker="o", ms=3, color=colors[s], label=s)
     allpts.sort()
     front, best = [], math.inf
     for c, e, s in allpts:
@@ -175,6 +197,36 @@ for ax, (case, grid, key, title) in zip(axs, pareto_panels):
 axs[0].legend(fontsize=6, ncol=2)
 fig.tight_layout()
 fig.savefig(os.path.join(res, "pareto.png"), dpi=110)
+plt.close(fig)
+
+# ---- the time-grid correction (issue 22): off (dashed) and on (solid) for the Verlet forms
+gc_panels = [("headon_52", "err_e", "|Δe|, LSD e = 0.8, zero-overlap end"),
+             ("headon_52_zf", "err_e", "|Δe|, LSD, zero-force end"),
+             ("headon_hertz_tsuji", "err_e", "|Δe|, Hertz + Tsuji α = 0.2"),
+             ("oblique_25", "err_beta", "|Δβ|, oblique 25° (LSD e = 0.98 + Cundall–Strack)"),
+             ("headon_52", "err_tc_rel", "|Δt_c|/t_c, LSD zero-overlap end"),
+             ("headon_hertz_tsuji", "err_tc_rel", "|Δt_c|/t_c, Hertz + Tsuji")]
+fig, axs = plt.subplots(2, 3, figsize=(17, 10))
+for ax, (case, key, title) in zip(axs.flat, gc_panels):
+    ser = series(case, "generic", key)
+    for b in SHOWN_GC:
+        for s, ls, lw in ((b, "--", 1.0), (b + GC, "-", 2.0)):
+            pts = [(n, e) for n, e in ser.get(s, []) if e > 0]
+            if pts:
+                ax.loglog([p[0] for p in pts], [p[1] for p in pts], ls, lw=lw, marker="o", ms=3,
+                          color=colors[b], label=s)
+    for p, ls in ((1, ":"), (2, "-.")):
+        ax.loglog([5, 500], [1e-2 * (5 / 10) ** -p, 1e-2 * (500 / 10) ** -p], ls, color="grey", lw=0.8)
+    ax.axhline(1e-3, color="k", lw=0.5)
+    ax.axhline(1e-4, color="k", lw=0.5)
+    ax.set_title(title, fontsize=9)
+    ax.set_xlabel("steps per contact N (generic dt = t_c/(N + f))")
+    ax.grid(True, which="both", alpha=0.3)
+axs.flat[0].legend(fontsize=7)
+fig.suptitle("Time-grid correction of the contact start and end steps: dashed off, solid on; grey: slopes 1 and 2",
+             fontsize=10)
+fig.tight_layout()
+fig.savefig(os.path.join(res, "grid_correction.png"), dpi=110)
 plt.close(fig)
 
 # ---- table
@@ -220,7 +272,39 @@ for s in schemes:
         fmt(cost_for("headon_52", "generic", "err_e", s, 1e-3), ".0f"),
         fmt(cost_for("oblique_25", "generic", "err_beta", s, 2e-4), ".0f")]) + " |")
 L.append("")
-L.append("## Cheapest scheme per accuracy (cost per contact, log-log interpolation in N = 10 … 320)\n")
+L.append("## Time-grid correction of the contact start and end steps (issue 22)\n")
+L.append("`SCHEME+gc`: the same one-evaluation scheme with `grid_correction on` (contact/grid_correction.h). "
+         "Generic dt = t_c/(N + f), f = 1/8 … 7/8, 16 phases each. Order: least-squares fit over N = 80 … 500. "
+         "Target (issue 22): \\|Δe\\| ≤ 1e-3 at N ≤ 25 and ≤ 1e-4 at N ≤ 80, order ≥ 1.8; the 25° β error at "
+         "most half of the uncorrected one.\n")
+L.append("| case | scheme | \\|Δe\\| off N=25 | on N=25 | off N=80 | on N=80 | on N=320 | order off | order on "
+         "| \\|Δt_c\\|/t_c off N=80 | on N=80 |")
+L.append("|" + "---|" * 11)
+for case in ("headon_52", "headon_52_zf", "headon_hertz_tsuji", "oblique_25"):
+    for b in [x for x in plain if x not in MULTI]:
+        if b not in SHOWN_GC and case != "headon_52":
+            continue
+        g = b + GC
+        L.append("| " + " | ".join([
+            case, b, fmt(err_at(case, "generic", "err_e", b, 25)), fmt(err_at(case, "generic", "err_e", g, 25)),
+            fmt(err_at(case, "generic", "err_e", b, 80)), fmt(err_at(case, "generic", "err_e", g, 80)),
+            fmt(err_at(case, "generic", "err_e", g, 320)),
+            fmt(order_fit(case, "generic", "err_e", b, 80, 500), ".2f"),
+            fmt(order_fit(case, "generic", "err_e", g, 80, 500), ".2f"),
+            fmt(err_at(case, "generic", "err_tc_rel", b, 80)), fmt(err_at(case, "generic", "err_tc_rel", g, 80))]) + " |")
+L.append("")
+L.append("25° oblique, \\|Δβ\\| with / without the correction (generic dt):\n")
+Ns = sorted({int(r["N"]) for r in rows})
+L.append("| scheme | " + " | ".join(f"N={n}" for n in Ns) + " |")
+L.append("|" + "---|" * (len(Ns) + 1))
+for b in SHOWN_GC:
+    cells = []
+    for n in Ns:
+        on, off = err_at("oblique_25", "generic", "err_beta", b + GC, n), err_at("oblique_25", "generic", "err_beta", b, n)
+        cells.append(f"{fmt(on)} / {fmt(off)} ({on / off:.2f})" if on > 0 and off > 0 else "-")
+    L.append(f"| {b} | " + " | ".join(cells) + " |")
+L.append("")
+L.append("## Cheapest scheme per accuracy (cost per contact, log-log interpolation in N = 5 … 500)\n")
 L.append("| target | cheapest (cost) | next (cost) | velocity_verlet (= nve/sphere) cost |")
 L.append("|---|---|---|---|")
 targets = [("headon_52", "generic", "err_e", t, f"\\|Δe\\| ≤ {t:g}, generic dt") for t in (1e-2, 1e-3, 1e-4)]
@@ -232,7 +316,7 @@ for case, grid, key, t, label in targets:
     c = sorted((cost_for(case, grid, key, s, t), s) for s in schemes)
     c = [x for x in c if not math.isnan(x[0])]
     vv = cost_for(case, grid, key, "velocity_verlet", t)
-    first = f"{c[0][1]} ({c[0][0]:.0f})" if c else "none within N ≤ 320"
+    first = f"{c[0][1]} ({c[0][0]:.0f})" if c else "none within N ≤ 500"
     second = f"{c[1][1]} ({c[1][0]:.0f})" if len(c) > 1 else "-"
     L.append(f"| {label} | {first} | {second} | {fmt(vv, '.0f')} |")
 L.append("")
@@ -240,6 +324,7 @@ L.append("## Pareto fronts (scheme at N on the front, generic dt)\n")
 for (case, grid, key), front in fronts.items():
     L.append(f"- {case} {key} ({grid}): " + ", ".join(f"{s} ({c:.0f}: {e:.1e})" for c, e, s in front))
 L.append("")
-L.append("Plots: `errors_vs_N.png` (errors against N), `pareto.png` (error against cost per contact).")
+L.append("Plots: `errors_vs_N.png` (errors against N, uncorrected), `pareto.png` (error against cost per contact, "
+         "with the corrected Verlet forms as thick lines), `grid_correction.png` (off and on).")
 open(os.path.join(res, "table.md"), "w").write("\n".join(L) + "\n")
 print("\n".join(L))

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 // tdem integrator study driver (validation/integrators/run.sh compiles it against src/, header-only):
-// for every scheme of collision/integrate_impact.h (the 17 one-evaluation schemes of
-// integrators/schemes.h and heun, rk4, vv2, abm4_pece) and N = 10 ... 320 steps per contact, the
-// phase-averaged |error| (P start phases, gap = (i + 1/2)/P v_n0 dt) of e, beta, e_t, spin and the
+// for every scheme of collision/integrate_impact.h (the 18 one-evaluation schemes of
+// integrators/schemes.h and heun, rk4, vv2, abm4_pece; the one-evaluation ones once more with the
+// time-grid correction of contact/grid_correction.h, named SCHEME+gc) and N = 5 ... 500 steps per
+// contact, the phase-averaged |error| (P start phases, gap = (i + 1/2)/P v_n0 dt) of e, beta, e_t,
+// spin, the contact time (relative; steps x dt, or the interpolated time of a corrected run) and the
 // rebound angles against the closed form of collision/analytic.h, on two step grids:
 //   integer  dt = t_c/N exactly (physics_reference 5.2 convention: the contact lasts a whole number
 //            of steps, the end of contact falls at the same grid phase as the start);
@@ -10,6 +12,7 @@
 //            fraction of the contact time, as in any real simulation).
 // Cases: headon_52   physics_reference 5.2 (m = 0.01 kg, k = 1e5 N/m, gamma = 4.48097 kg/s,
 //                    variant A = zero_overlap end, frictionless, |v| = 1 m/s, R = 0.01 m);
+//        headon_52_zf  the same with the zero-force end (e = 0.8081);
 //        oblique_THETA  8.5(a): R = 2.5 mm, rho = 4000, LSD from e = 0.98, t_n = 1e-5 s (variant-A
 //                    formulas), zero_force end, Cundall-Strack kappa = 2/7, mu = 0.092, |v| = 3.9 m/s.
 //        headon_hertz_tsuji  Hertz + Tsuji damping (force continuous at touch), 8.2 steel sphere,
@@ -60,6 +63,7 @@ Case<LsdLaw> make_case(const std::string& name, double m, double R, double kn, d
   c.ref.rebound_angle_com = x.rebound_angle_com;
   c.ref.rebound_angle_contact = x.rebound_angle_contact;
   c.tc = x.contact_time;
+  c.ref.contact_time = x.contact_time;
   return c;
 }
 
@@ -87,19 +91,26 @@ Case<HertzLaw> make_hertz_case() {
   c.ref.omega = 0.0;
   c.ref.rebound_angle_com = c.ref.rebound_angle_contact = 0.0;
   c.tc = r.contact_time;
+  c.ref.contact_time = r.contact_time;
   return c;
 }
 
-const int kNs[] = {10, 20, 40, 80, 160, 320};
+const int kNs[] = {5, 10, 20, 25, 40, 80, 160, 320, 500};
 const double kFracs[] = {0.125, 0.375, 0.625, 0.875};
 
 template <class Law>
 void study(const Case<Law>& c0, int phases) {
   const double deg = 180.0 / M_PI;
-  for (const ImpactScheme& s : all_impact_schemes()) {
+  std::vector<std::pair<ImpactScheme, bool>> runs;  // (scheme, grid correction)
+  for (const ImpactScheme& s : all_impact_schemes()) runs.push_back({s, false});
+  for (const ImpactScheme& s : all_impact_schemes())
+    if (!s.multi) runs.push_back({s, true});
+  for (const auto& run : runs) {
+    const ImpactScheme& s = run.first;
+    const std::string name = std::string(s.name()) + (run.second ? "+gc" : "");
     for (int N : kNs) {
       for (int grid = 0; grid < 2; ++grid) {
-        double acc[6] = {0, 0, 0, 0, 0, 0};
+        double acc[7] = {0, 0, 0, 0, 0, 0, 0};
         int n = 0;
         bool ok = true;
         for (double f : kFracs) {
@@ -107,16 +118,17 @@ void study(const Case<Law>& c0, int phases) {
           Case<Law> c = c0;
           ImpactOptions o;
           o.dt = c.tc / (grid == 0 ? static_cast<double>(N) : N + f);
+          o.grid_correction = run.second;
           const PhaseAverage pa = phase_averaged(c.law, c.cs, s, c.setup, o, phases, c.ref);
           if (pa.ended != phases) ok = false;
-          const double v[6] = {pa.e, pa.beta, pa.e_t, pa.omega, pa.rebound_angle_com * deg,
-                               pa.rebound_angle_contact * deg};
-          for (int k = 0; k < 6; ++k) acc[k] += v[k];
+          const double v[7] = {pa.e, pa.beta, pa.e_t, pa.omega, pa.rebound_angle_com * deg,
+                               pa.rebound_angle_contact * deg, pa.contact_time / c.tc};
+          for (int k = 0; k < 7; ++k) acc[k] += v[k];
           ++n;
         }
-        std::printf("%s,%s,%s,%d,%d,%d", c0.name.c_str(), s.name(), grid == 0 ? "integer" : "generic", N,
+        std::printf("%s,%s,%s,%d,%d,%d", c0.name.c_str(), name.c_str(), grid == 0 ? "integer" : "generic", N,
                     s.evaluations(), s.history());
-        for (int k = 0; k < 6; ++k) {
+        for (int k = 0; k < 7; ++k) {
           const double v = acc[k] / n;
           if (ok && std::isfinite(v)) std::printf(",%.6e", v);
           else std::printf(",");
@@ -134,6 +146,8 @@ int main(int argc, char** argv) {
   std::vector<Case<LsdLaw>> cases;
   cases.push_back(make_case("headon_52", 0.01, 0.01, 1e5, 4.48097, ContactEnd::zero_overlap, 2.0 / 7.0 * 1e5, 0.0,
                             1.0, 0.0));
+  cases.push_back(make_case("headon_52_zf", 0.01, 0.01, 1e5, 4.48097, ContactEnd::zero_force, 2.0 / 7.0 * 1e5, 0.0,
+                            1.0, 0.0));
   {
     const double R = 2.5e-3, m = 4.0 / 3.0 * M_PI * R * R * R * 4000.0, le = std::log(0.98), tn = 1e-5;
     const double kn = m * (M_PI * M_PI + le * le) / (tn * tn), gn = -2.0 * m * le / tn;
@@ -142,7 +156,7 @@ int main(int argc, char** argv) {
                                 2.0 / 7.0 * kn, 0.092, 3.9, th));
   }
   std::printf("case,scheme,grid,N,evaluations_per_step,history_doubles,err_e,err_beta,err_et,err_spin,"
-              "err_rebound_com_deg,err_rebound_contact_deg,ref_e,ref_beta,ref_rebound_contact_deg\n");
+              "err_rebound_com_deg,err_rebound_contact_deg,err_tc_rel,ref_e,ref_beta,ref_rebound_contact_deg\n");
   for (const auto& c : cases) study(c, phases);
   study(make_hertz_case(), phases);
   return 0;

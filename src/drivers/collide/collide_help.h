@@ -115,9 +115,14 @@ Integration and output:
                           free-flight steps later. NAME: one-evaluation schemes
                           euler|symplectic_euler|taylor2|taylor3|leapfrog|position_verlet|
                           velocity_verlet|velocity_verlet_sync|beeman|ab2|ab3|ab4|ab5|abm4|gear4|
-                          gear5|gear6, or the harness-only heun|rk4|vv2|abm4_pece. Step: --dt, or
+                          gear5|gear6|velocity_verlet_ab2, or the harness-only heun|rk4|vv2|
+                          abm4_pece. Step: --dt, or
                           --steps N per estimated contact time (default 1000). Any normal law;
                           --tangential as above; lever arm radius only
+  --grid-correction on|off
+                          with a one-evaluation --scheme: correct the step in which the contact
+                          starts and the step in which it ends for where the touch and the end
+                          fall between grid points (contact/grid_correction.h; default off)
   --gap GAP               with --scheme: the start gap [m], >= 0 (default 0: touch at t = 0)
   --phases P              with --scheme: P runs with gap GAP + (i + 1/2)/P v_n0 dt, i = 0..P-1
                           (the contact start phase on the time grid); prints the means and, where

@@ -98,11 +98,17 @@ Run run(Args& a) {
       S.phases = static_cast<int>(p);
       if (a.has("--curve")) throw BadInput("option --curve cannot be used with --phases (one curve per run)");
     }
+    if (a.has("--grid-correction")) {
+      S.opt.grid_correction = a.choice("--grid-correction", {"off", "on"}) == "on";
+      if (S.opt.grid_correction && S.scheme.multi)
+        throw BadInput("option --grid-correction on needs a one-evaluation scheme (the host's step); '" + name +
+                       "' evaluates the force " + std::to_string(S.scheme.evaluations()) + " times per step");
+    }
     S.opt.dt = opt.dt;
     S.opt.steps_per_contact = a.has("--steps") ? opt.steps_per_contact : 1000;
     S.opt.record = opt.record;
   } else {
-    for (const char* o : {"--gap", "--phases"})
+    for (const char* o : {"--gap", "--phases", "--grid-correction"})
       if (a.has(o)) throw BadInput(std::string("option ") + o + " needs --scheme");
   }
   if (run.analytic) analytic_check_oblique(a, run.obl);
@@ -425,6 +431,7 @@ void write_scheme(Json& j, const Run& r) {
   const SchemeRun& S = r.sch;
   const double deg = 180.0 / M_PI;
   j.str("scheme", S.scheme.name());
+  j.str("grid_correction", S.opt.grid_correction ? "on" : "off");
   j.num("gap", S.setup.gap);
   j.integer("evaluations_per_step", S.scheme.evaluations());
   j.integer("history_per_particle", S.scheme.history());

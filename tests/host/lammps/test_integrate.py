@@ -51,7 +51,7 @@ chk = lc.Checker("lammps.integrate_" + PART)
 
 SCHEMES = ["euler", "symplectic_euler", "taylor2", "taylor3", "leapfrog", "position_verlet",
            "velocity_verlet", "velocity_verlet_sync", "beeman", "ab2", "ab3", "ab4", "ab5", "abm4",
-           "gear4", "gear5", "gear6"]
+           "gear4", "gear5", "gear6", "velocity_verlet_ab2"]
 DUMP = ("write_dump      all custom {dump} id x y z vx vy vz omegax omegay omegaz "
         "modify sort id format float %.17g\n")
 
@@ -240,7 +240,7 @@ thermo          500
 BED_DUMP = ("write_dump      all custom {dump} id x y z vx vy vz omegax omegay omegaz c_nc "
             "modify sort id format float %.17g\n")
 BED_LAW = "normal lsd stiffness 2000 50 tangential cundall_strack 600 25 0.5"
-CORRECTORS = {"beeman", "velocity_verlet_sync", "abm4", "gear4", "gear5", "gear6"}
+CORRECTORS = {"beeman", "velocity_verlet_sync", "abm4", "gear4", "gear5", "gear6", "velocity_verlet_ab2"}
 RESTART_SCHEMES = ["ab4", "ab5", "gear5", "gear6", "beeman", "abm4", "taylor3", "position_verlet"]
 
 

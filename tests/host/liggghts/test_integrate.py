@@ -61,7 +61,7 @@ import tdem_lig as T
 
 SCHEMES = ["euler", "symplectic_euler", "taylor2", "taylor3", "leapfrog", "position_verlet",
            "velocity_verlet", "velocity_verlet_sync", "beeman", "ab2", "ab3", "ab4", "ab5", "abm4",
-           "gear4", "gear5", "gear6"]
+           "gear4", "gear5", "gear6", "velocity_verlet_ab2"]
 MODEL = "model tdem/lsd tangential tdem/cundall_strack"
 HEAD = """
 atom_style granular
