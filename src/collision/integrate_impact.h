@@ -223,12 +223,14 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     double xi = 0.0, xi_dot = 0.0, fn = 0.0, ft_t = 0.0, vs_t = 0.0;
     bool sliding = false, contact = false;
   } last;
-  // grid correction (contact/grid_correction.h): the previous step's overlap, normal force and
-  // tangential force (the law's samples, before any correction)
+  // grid correction (contact/grid_correction.h): whether the contact is corrected, and the last
+  // contact step's overlap, normal force and stiffness, tangential force and sliding state as
+  // reconstructed at an end (reconstruct_prev)
   struct GcPrev {
     double xi = 0.0, fn = 0.0, k = 0.0, ft[3] = {0.0, 0.0, 0.0};
     bool sliding = false;
-    bool on = false;  // this contact is corrected (its start was seen and resolved)
+    bool on = false;     // this contact is corrected (its start was seen and resolved)
+    bool ended = false;  // its zero-force end has been corrected
   } gc_prev;
   // The normal law's two parts at (xi, xi_dot) and their exponents in xi (a second evaluation at
   // xi / 2): e = elastic, d = the rest (damping) of `f`.
@@ -249,6 +251,33 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
   // end), the tangential force linear from gc_prev.ft to the law's value at the end (its history
   // of the previous step advanced by v_t s, the normal force there fe).
   double gc_touch_time = NAN;
+  // The last contact step's values, reconstructed at an end step (the host keeps none of them):
+  // the overlap xi - h xi' (the rate now), the normal law there (its history that of the last
+  // step) and the tangential law there with that normal force (its history before this step's
+  // update, no update).
+  auto reconstruct_prev = [&](const Y& y, const TangentialLaw& law_prev, double xi, double xi_dot) {
+    gc_prev.xi = grid::previous_overlap(xi, xi_dot, h);
+    const NormalResult<double> np = normal.force(gc_prev.xi, xi_dot, m, R, false);
+    gc_prev.fn = np.force;
+    gc_prev.k = np.stiffness;
+    double xi_now;
+    TangentialKin kp;
+    geometry(y, xi_now, kp.vt);
+    kp.n[0] = 0.0, kp.n[1] = 0.0, kp.n[2] = 1.0;
+    kp.spin_n = 0.5 * y.w()[2];
+    kp.dt = h;
+    kp.overlap = gc_prev.xi;
+    kp.meff = m;
+    kp.reff = R;
+    kp.fn = np.force;
+    kp.kn = np.stiffness;
+    kp.gamman = np.damping;
+    TangentialLaw copy = law_prev;
+    copy.force(kp, false, gc_prev.ft);
+    gc_prev.sliding = grid::sliding(gc_prev.ft[0] * gc_prev.ft[0] + gc_prev.ft[1] * gc_prev.ft[1] +
+                                        gc_prev.ft[2] * gc_prev.ft[2],
+                                    law_prev.friction(), gc_prev.fn);
+  };
   auto end_correction = [&](const Y& y, const TangentialLaw& law, double xi_dot, double s, bool at_zero_force,
                             Acc& out) {
     if (std::isfinite(gc_touch_time) && !std::isfinite(r.contact_time_interpolated))
@@ -263,30 +292,16 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       fe = normal.force(0.0, xi_dot, m, R, false).force;
       fn_x = grid::end_extra(gc_prev.fn, pp.e, pp.p, pp.d, pp.q, s, h);
     }
-    double vt[3];
-    double xi_now;
-    geometry(y, xi_now, vt);
-    TangentialLaw at_end = law;
-    TangentialKin ke;
-    ke.n[0] = 0.0, ke.n[1] = 0.0, ke.n[2] = 1.0;
-    for (int i = 0; i < 3; ++i) ke.vt[i] = vt[i];
-    ke.spin_n = 0.5 * y.w()[2];
-    ke.dt = s;
-    ke.overlap = 0.0;
-    ke.meff = m;
-    ke.reff = R;
-    ke.fn = fe;
-    ke.kn = 0.0;
-    ke.gamman = 0.0;
-    double fte[3];
-    at_end.force(ke, true, fte);
-    double ft_x[3];
     // sliding: the tangential force follows the normal force (mu F_n); sticking: linear to the
-    // law's value at the end
-    const bool follows = gc_prev.sliding && gc_prev.fn > 0.0;
-    for (int i = 0; i < 3; ++i)
-      ft_x[i] = follows ? gc_prev.ft[i] / gc_prev.fn * (fn_x + gc_prev.fn) - gc_prev.ft[i]
-                        : grid::end_extra(gc_prev.ft[i], gc_prev.ft[i] - fte[i], 1.0, fte[i], 0.0, s, h);
+    // last one capped by the limit at the end
+    const double ft2 = gc_prev.ft[0] * gc_prev.ft[0] + gc_prev.ft[1] * gc_prev.ft[1] + gc_prev.ft[2] * gc_prev.ft[2];
+    const double cap = grid::cap_factor(ft2, law.friction() * std::fabs(fe));
+    double ft_x[3];
+    for (int i = 0; i < 3; ++i) {
+      const double fte = cap * gc_prev.ft[i];
+      ft_x[i] = gc_prev.sliding ? gc_prev.ft[i] / gc_prev.fn * (fn_x + gc_prev.fn) - gc_prev.ft[i]
+                                : grid::end_extra(gc_prev.ft[i], gc_prev.ft[i] - fte, 1.0, fte, 0.0, s, h);
+    }
     out.a[0] = ft_x[0] / m;
     out.a[1] = ft_x[1] / m;
     out.a[2] = (fn_x + ft_x[2]) / m;
@@ -306,11 +321,13 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       last.xi = xi, last.xi_dot = -y.v()[2], last.fn = 0.0, last.ft_t = 0.0, last.vs_t = out.vt[0];
       last.sliding = false;
       // (a zero-force law whose force ended before the overlap did has nothing left to correct)
-      if (gc && in_contact_prev && gc_prev.on && (normal.end() == ContactEnd::zero_overlap || gc_prev.fn > 0.0)) {
+      if (gc && in_contact_prev && gc_prev.on && !gc_prev.ended) {
         // the first step after a zero-overlap end: only the extra impulse of the end acts; the
         // law at the end is its value at xi = 0+ with the rate now (its history still that of
         // the last contact step)
-        end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, out);
+        reconstruct_prev(y, law, xi, xi_dot);
+        if (grid::end_usable(gc_prev.xi, gc_prev.fn, xi, false))
+          end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, out);
       }
       if (gc) gc_prev = GcPrev{};
       return false;
@@ -374,25 +391,28 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         k0.fn = touch.force;
         double ft0[3];
         fresh_or_prev.force(k0, false, ft0);
+        const bool follows = grid::sliding(ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2], law.friction(), nr.force);
         for (int i = 0; i < 3; ++i)
-          ft_apply[i] = sliding && nr.force > 0.0 ? ft[i] / nr.force * fn_apply
-                                                  : grid::start_force(ft[i] - ft0[i], 1.0, ft0[i], 0.0, tau, h);
-      } else if (gc_prev.on && in_contact_prev && normal.end() == ContactEnd::zero_force && gc_prev.fn > 0.0 &&
+          ft_apply[i] = follows ? ft[i] / nr.force * fn_apply
+                                : grid::start_force(ft[i] - ft0[i], 1.0, ft0[i], 0.0, tau, h);
+      } else if (gc_prev.on && !gc_prev.ended && in_contact_prev && normal.end() == ContactEnd::zero_force &&
                  nr.force <= 0.0) {
         // a zero-force end inside the last step: where the unclipped force crossed zero (the
         // law's parts now; a law that reports none when clipped: the tangent of the last step)
+        reconstruct_prev(y, fresh_or_prev, xi, xi_dot);
+        gc_prev.ended = true;
         double s_end;
         if (nr.elastic != 0.0 || nr.damping != 0.0)
           s_end = grid::end_time(gc_prev.fn, nr.elastic + nr.damping * xi_dot, h);
         else
           s_end = grid::end_time(gc_prev.fn, gc_prev.fn + gc_prev.k * xi_dot * h, h);
-        Acc extra;
-        end_correction(y, fresh_or_prev, xi_dot, s_end, true, extra);
-        fn_apply += extra.a[2] * m;
-        for (int i = 0; i < 2; ++i) ft_apply[i] += extra.a[i] * m;
+        if (grid::end_usable(gc_prev.xi, gc_prev.fn, xi, true)) {
+          Acc extra;
+          end_correction(y, fresh_or_prev, xi_dot, s_end, true, extra);
+          fn_apply += extra.a[2] * m;
+          for (int i = 0; i < 2; ++i) ft_apply[i] += extra.a[i] * m;
+        }
       }
-      gc_prev.xi = xi, gc_prev.fn = nr.force, gc_prev.k = nr.stiffness, gc_prev.sliding = sliding;
-      for (int i = 0; i < 3; ++i) gc_prev.ft[i] = ft[i];
     }
     // F = F_n n + F_t; torque -R n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
     out.a[0] = ft_apply[0] / m;

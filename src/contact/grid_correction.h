@@ -78,11 +78,12 @@ template <class T>
 inline bool resolved(T elastic, T p, T damping, T xi, T xi_dot, T meff, T h) noexcept {
   if (!(elastic > T(0) && xi > T(0) && xi_dot > T(0) && meff > T(0))) return false;
   if (damping * kMinDampingSteps * h > meff) return false;
+  if (p == T(1)) return T(M_PI) * std::sqrt(meff * xi / elastic) >= kMinSteps * h;  // pi sqrt(m*/k)
   const T c = elastic / std::pow(xi, p);
   const T xi_max = std::pow((p + T(1)) * meff * xi_dot * xi_dot / (T(2) * c), T(1) / (p + T(1)));
   const T a = T(1) / (p + T(1));
-  const T tc = T(2) * xi_max / xi_dot * std::sqrt(T(M_PI)) * std::tgamma(T(1) + a) / std::tgamma(T(0.5) + a);
-  return tc >= kMinSteps * h;
+  const T shape = p == T(1.5) ? T(1.471637592162353) : std::sqrt(T(M_PI)) * std::tgamma(T(1) + a) / std::tgamma(T(0.5) + a);
+  return T(2) * xi_max / xi_dot * shape >= kMinSteps * h;
 }
 
 // The force near an event as a sum of two powers of the time t' from the event (the touch, or
@@ -94,11 +95,22 @@ inline bool resolved(T elastic, T p, T damping, T xi, T xi_dot, T meff, T h) noe
 // Kuwabara-Kono (q = 1/2) or Tsuji (q = 1/4) damping along a straight approach: a linear model
 // in time cannot follow xi^(1/4) near the touch and does worse than no correction at all there.
 // Returns int_0^length F(t') dt'.
+// r^x with the exponents of the common laws without pow (0, 1/2, 1, 3/2, 2).
+template <class T>
+TDEM_KERNEL T power(T r, T x) noexcept {
+  if (x == T(0)) return T(1);
+  if (x == T(1)) return r;
+  if (x == T(2)) return r * r;
+  if (x == T(0.5)) return std::sqrt(r);
+  if (x == T(1.5)) return r * std::sqrt(r);
+  return std::pow(r, x);
+}
+
 template <class T>
 TDEM_KERNEL T power_impulse(T e, T p, T d, T q, T t_ref, T length) noexcept {
   const T floor = T(1e-12) * length;
   const T r = length / (t_ref > floor ? t_ref : floor);
-  return length * (e * std::pow(r, p) / (p + T(1)) + d * std::pow(r, q) / (q + T(1)));
+  return length * (e * power(r, p) / (p + T(1)) + d * power(r, q) / (q + T(1)));
 }
 
 // The exponent x of a part that scales as xi^x, from its values at xi and at xi / 2 (a law
@@ -107,6 +119,8 @@ TDEM_KERNEL T power_impulse(T e, T p, T d, T q, T t_ref, T length) noexcept {
 template <class T>
 TDEM_KERNEL T power_exponent(T f, T f_half, T fallback) noexcept {
   if (!(f * f_half > T(0))) return fallback;
+  if (f == T(2) * f_half) return T(1);  // the linear law: exact in binary, no log
+  if (f == f_half) return T(0);
   T x = std::log2(f / f_half);
   const T whole = std::round(x);
   if (std::fabs(x - whole) < T(1e-9)) x = whole;  // 1 and 0 exactly for the linear law
@@ -156,6 +170,51 @@ TDEM_KERNEL T near_windows(T c, T x, T t_ref, T u0, T h) noexcept {
          std::pow(v, x + T(1)) / (x + T(1)) + x * (T(1) - x) * (x - T(2)) * std::pow(v, x - T(3)) / T(576);
   return -scale * sum;  // the extra force: minus the sampling excess of those windows
 }
+
+// The tangential force of the two events, for any tangential law from its samples:
+//   sliding (|F_t| at the friction limit mu F_n, F_n > 0) it follows the normal force: the
+//   corrected tangential kick is F_t / F_n times the corrected normal kick;
+//   sticking it is linear in time, from the law's value at the touch (spring 0) to its sample,
+//   and at the end from the last sample to that sample capped by the limit at the end,
+//   mu |F_n(end)| (0 for a zero-force end).
+template <class T>
+TDEM_KERNEL bool sliding(T ft_squared, T mu, T fn) noexcept {
+  return fn > T(0) && ft_squared >= mu * mu * fn * fn * T(1.0 - 1e-9);
+}
+// The factor that caps a tangential force of squared size ft_squared to the limit.
+template <class T>
+TDEM_KERNEL T cap_factor(T ft_squared, T limit) noexcept {
+  return ft_squared > limit * limit ? limit / std::sqrt(ft_squared) : T(1);
+}
+
+// The end step needs the last contact step's values. A host does not keep them (that would cost
+// stores at every step of every contact): it reconstructs them at the end from the law's history,
+// which still holds that step, at the overlap one step back along the rate now. For the position
+// update of velocity Verlet (x+ = x + h v_half, the rate the force of plain velocity Verlet sees)
+// this is the last overlap up to the turn of the normal; for the other schemes it is O(h^2).
+template <class T>
+TDEM_KERNEL T previous_overlap(T xi, T xi_dot, T h) noexcept {
+  return xi - h * xi_dot;
+}
+
+// Is the reconstructed last step a contact step whose end can be corrected? Its overlap must be
+// positive (and, for a zero-overlap end, above the overlap now), and for a zero-force end its
+// force positive. A scheme whose force sees a predicted velocity can make the one-step-back
+// overlap of a contact of a step or two (a graze in a dense bed) zero or negative; the end model
+// through such a point would be singular (s -> 0 with a finite force), so that end is left alone.
+template <class T>
+TDEM_KERNEL bool end_usable(T xi_prev, T f_prev, T xi_now, bool at_zero_force) noexcept {
+  if (!(xi_prev > T(0)) || !std::isfinite(f_prev)) return false;
+  return at_zero_force ? f_prev > T(0) : xi_prev > xi_now;
+}
+
+// The one value a host keeps per contact with the correction on (after the law's own history):
+// 0 no contact at the last step; kFlagOn a corrected contact (its start was seen and resolved);
+// kFlagEnded a corrected contact whose force has ended at zero (a zero-force law whose overlap
+// lasts longer); kFlagSeen a contact that is not corrected. A scalar: it does not change sign
+// with the pair order.
+inline constexpr int history_size = 1;
+inline constexpr double kFlagOn = 1.0, kFlagEnded = 2.0, kFlagSeen = 4.0;
 
 // The two corrected kicks, as forces (impulse / h):
 //   at the first contact step n (touch tau before t_n): the whole kick of the contact up to the

@@ -3,6 +3,8 @@
 
 #include "fix_tdem_wall_gran.h"
 
+#include "grid_host.h"
+
 #include "atom.h"
 #include "domain.h"
 #include "error.h"
@@ -197,8 +199,9 @@ void FixTDEMWallGran::post_force(int /*vflag*/)
     tdem_lammps::dispatch(false, law.mode, law.end, law.slip, law.tlaw, WallRunnerCorrected{this});
     return;
   }
-  // rolling resistance runs on the run-time path (the compile-time ones have none, at no cost)
-  tdem_lammps::dispatch(!law.roll, law.mode, law.end, law.slip, law.tlaw, WallRunner{this});
+  // rolling resistance and the time-grid correction run on the run-time path (the compile-time
+  // ones have none, at no cost)
+  tdem_lammps::dispatch(!law.roll && !law.gc, law.mode, law.end, law.slip, law.tlaw, WallRunner{this});
 }
 
 template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline)) void FixTDEMWallGran::eval()
@@ -287,6 +290,15 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double rsq = dx * dx + dy * dy + dz * dz;
     const double rad = radius[i];
     double *shear = rows_[i];
+    if constexpr (M < 0) {
+      // grid_correction: the first step after a corrected contact gets the end's impulse; the
+      // whole row (with the correction's values) is forgotten
+      if (law.gc && rsq > rad * rad) {
+        if (history_update) gc_separation_wall(i, shear, vwall);
+        for (int m = 0; m < width_; m++) shear[m] = 0.0;
+        continue;
+      }
+    }
     if (rsq > rad * rad) {
       if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
         tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, width_);
@@ -320,10 +332,20 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double wr2 = rad * omg[i][1] * rinv;
     const double wr3 = rad * omg[i][2] * rinv;
 
-    double ccel, fs[3], troll[3];
-    tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
-                                               vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
-                                               ccel, fs, rad, 0.0, omg[i], nullptr, troll);
+    double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
+    bool corrected = false;
+    if constexpr (M < 0) {
+      if (law.gc && history_update && tdem_lammps::gc_needs(law, E, shear[width_ - 1] == 0.0, shear, width_)) {
+        const tdem_lammps::GcContact k{&law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, {vr1, vr2, vr3},
+                                       {wr1, wr2, wr3}, dt, rad, 0.0, omg[i], nullptr};
+        tdem_lammps::gc_contact(k, shear, width_, ccel, fs, troll);
+        corrected = true;
+      }
+    }
+    if (!corrected)
+      tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
+                                                 vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
+                                                 ccel, fs, rad, 0.0, omg[i], nullptr, troll);
     if constexpr (C != 0) {
       // count / overlap: the whole contact force times s (the history stays the law's own)
       if (cv.body[i] >= 0 && share) {
@@ -345,6 +367,47 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
       }
     }
   }
+}
+
+// The first step without contact of atom i with the wall, grid_correction on: the end's extra
+// impulse (grid_host.h). The wall geometry again, with the true normal also for a cylinder (the
+// contact loop puts an atom far from it off along z). Cold: once per contact.
+void FixTDEMWallGran::gc_separation_wall(int i, const double *shear, const double *vwall0)
+{
+  double **x = atom->x, **v = atom->v, **omg = atom->omega;
+  const double rad = atom->radius[i];
+  double d[3] = {0.0, 0.0, 0.0}, vwall[3] = {vwall0[0], vwall0[1], vwall0[2]};
+  if (wallstyle == ZCYLINDER) {
+    const double delxy = sqrt(x[i][0] * x[i][0] + x[i][1] * x[i][1]);
+    if (!(delxy > 0.0)) return;
+    const double delr = cylradius - delxy;
+    d[0] = -delr / delxy * x[i][0];
+    d[1] = -delr / delxy * x[i][1];
+    if (wshear && axis != 2) {
+      vwall[0] = vshear * x[i][1] / delxy;
+      vwall[1] = -vshear * x[i][0] / delxy;
+      vwall[2] = 0.0;
+    }
+  } else {
+    double wlo = lo, whi = hi;
+    if (wiggle && wallstyle == axis) {
+      const double arg = omega * (update->ntimestep - time_origin) * dt;
+      wlo = lo + amplitude - amplitude * cos(arg);
+      whi = hi + amplitude - amplitude * cos(arg);
+    }
+    const double del1 = x[i][wallstyle] - wlo, del2 = whi - x[i][wallstyle];
+    d[wallstyle] = (del1 < del2) ? del1 : -del2;
+  }
+  const double rsq = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+  if (!(rsq > 0.0)) return;
+  const double r = sqrt(rsq), rinv = 1.0 / r;
+  const tdem_lammps::GcContact k{&law, rigid.of(i, atom->rmass[i]), d[0], d[1], d[2], r, rinv, 1.0 / rsq, rad - r,
+                                 {v[i][0] - vwall[0], v[i][1] - vwall[1], v[i][2] - vwall[2]},
+                                 {rad * omg[i][0] * rinv, rad * omg[i][1] * rinv, rad * omg[i][2] * rinv},
+                                 dt, rad, 0.0, omg[i], nullptr};
+  double ccel, fs[3], fw[3];
+  if (tdem_lammps::gc_separation(k, shear, width_, ccel, fs))
+    tdem_lammps::add_wall_force(atom->f[i], atom->torque[i], d[0], d[1], d[2], ccel, fs, rinv, rad, fw);
 }
 
 void FixTDEMWallGran::centre_on_wall(int i) {

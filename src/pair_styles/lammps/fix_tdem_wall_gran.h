@@ -54,6 +54,8 @@ class FixTDEMWallGran : public tdem::host::PerAtomRows<Fix> {
   enum { XPLANE = 0, YPLANE = 1, ZPLANE = 2, ZCYLINDER = 3 };
   // error->one naming the atom whose centre lies on the wall surface (no contact normal)
   [[noreturn, gnu::cold, gnu::noinline]] void centre_on_wall(int i);
+  // grid_correction: the end's extra impulse at the first step without contact (grid_host.h)
+  [[gnu::cold, gnu::noinline]] void gc_separation_wall(int i, const double *shear, const double *vwall);
   tdem_lammps::LawCoeffs law;
   int wallstyle, wiggle, wshear, axis;
   double lo, hi, cylradius;

@@ -15,6 +15,8 @@
 
 #include "pair_tdem_gran.h"
 
+#include "grid_host.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -57,10 +59,12 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   umode = uend = uslip = 0;
   utlaw = 0;
   one_law = false;
+  gc_any = false;
   atom_ntypes = 0;
   dt = 0.0;
   freeze_group_bit = 0;
   restart_history_tags = -2;
+  restart_history_size = 0;
 
   // placeholder for the FixNeighHistory, so it keeps the input-script position in the fix list
   fix_history = nullptr;
@@ -100,26 +104,31 @@ struct PairRunner {
   bool one;               // every type pair has the same coefficients ...
   const LawCoeffs *law1;  // ... these
   template <int M, int E, int S, int TL = 0> void run() {
-    // the single-coefficient paths (ONE = 1) for the compile-time laws of cundall_strack
+    // the single-coefficient paths (ONE = 1; ONE = 2 with grid_correction on) for the
+    // compile-time laws of cundall_strack
     if constexpr (M >= 0 && TL == 0) {
       if (one) {
-        // normal hertz: end, slip and the damping member fixed at compile time too
-        if constexpr (M == tdem_lammps::MODE_HERTZ) {
-          using namespace tdem_lammps;
-#define TDEM_LMP_HCASE(e, s, d)                                            \
-  if (law1->end == e && law1->slip == s && law1->hdamp == d)               \
-    return p->template eval<M, e, s, TL, 1, d>(eflag, vflag);
-#define TDEM_LMP_HCASES(d) \
-  TDEM_LMP_HCASE(0, 0, d) TDEM_LMP_HCASE(0, 1, d) TDEM_LMP_HCASE(1, 0, d) TDEM_LMP_HCASE(1, 1, d)
-          TDEM_LMP_HCASES(HDAMP_LINEAR) TDEM_LMP_HCASES(HDAMP_KK)
-          TDEM_LMP_HCASES(HDAMP_TSUJI) TDEM_LMP_HCASES(HDAMP_GENERAL)
-#undef TDEM_LMP_HCASES
-#undef TDEM_LMP_HCASE
-        }
-        return p->template eval<M, E, S, TL, 1>(eflag, vflag);
+        if (law1->gc) return one_law<M, E, S, TL, 2>();
+        return one_law<M, E, S, TL, 1>();
       }
     }
     p->template eval<M, E, S, TL>(eflag, vflag);
+  }
+  template <int M, int E, int S, int TL, int ONE> void one_law() {
+    // normal hertz: end, slip and the damping member fixed at compile time too
+    if constexpr (M == tdem_lammps::MODE_HERTZ) {
+      using namespace tdem_lammps;
+#define TDEM_LMP_HCASE(e, s, d)                                            \
+  if (law1->end == e && law1->slip == s && law1->hdamp == d)               \
+    return p->template eval<M, e, s, TL, ONE, d>(eflag, vflag);
+#define TDEM_LMP_HCASES(d) \
+  TDEM_LMP_HCASE(0, 0, d) TDEM_LMP_HCASE(0, 1, d) TDEM_LMP_HCASE(1, 0, d) TDEM_LMP_HCASE(1, 1, d)
+      TDEM_LMP_HCASES(HDAMP_LINEAR) TDEM_LMP_HCASES(HDAMP_KK)
+      TDEM_LMP_HCASES(HDAMP_TSUJI) TDEM_LMP_HCASES(HDAMP_GENERAL)
+#undef TDEM_LMP_HCASES
+#undef TDEM_LMP_HCASE
+    }
+    p->template eval<M, E, S, TL, ONE>(eflag, vflag);
   }
 };
 // the corrected path (fix tdem/clump correction count|overlap|local_mass): the law at run time,
@@ -149,9 +158,13 @@ void PairTDEMGran::compute(int eflag, int vflag)
   }
 
   // compile-time paths when every type pair has the same law (and so the history size of
-  // that law)
-  tdem_lammps::dispatch(uniform && size_history == tdem_lammps::history_size(umode, utlaw), umode,
-                        uend, uslip, utlaw, PairRunner{this, eflag, vflag, one_law, &coeffs(1, 1)});
+  // that law); with grid_correction on only when every type pair has the same coefficients
+  // (ONE = 2), else the run-time path
+  const int law_hsize = tdem_lammps::history_size(umode, utlaw);
+  const bool compile_time =
+      uniform && (gc_any ? one_law && coeffs(1, 1).gc && size_history == law_hsize + tdem::grid::history_size
+                         : size_history == law_hsize);
+  tdem_lammps::dispatch(compile_time, umode, uend, uslip, utlaw, PairRunner{this, eflag, vflag, one_law, &coeffs(1, 1)});
 
   if (vflag_fdotr) virial_fdotr_compute();
 }
@@ -187,8 +200,10 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   // loop invariants (the force and touch stores cannot alias them)
   const LawCoeffs law1 = lawtab[ntp1 + 1];
   // history values per neighbour: fixed on the compile-time paths, else size_history
-  // (a constant expression on those paths, so that the unused stores of clear_*_history vanish)
-  constexpr int hsize_m = M >= 0 ? tdem_lammps::history_size(M, TL > 0 ? TL : 0) : 0;
+  // (a constant expression on those paths, so that the unused stores of clear_*_history vanish);
+  // G: grid_correction on (ONE = 2), its flags slot last
+  constexpr bool G = ONE == 2;
+  constexpr int hsize_m = M >= 0 ? tdem_lammps::history_size(M, TL > 0 ? TL : 0) + (G ? tdem::grid::history_size : 0) : 0;
   const int hsize = M >= 0 ? hsize_m : size_history;
 
   const int inum = list->inum;
@@ -233,13 +248,30 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
     }
   }
 
+  // grid_correction: the contacts whose step needs the correction (a start, an end, a watched
+  // clip) are deferred to after the loop as (i, jj) (a separation as (~i, jj)): a call in the loop
+  // would make the compiler keep the loop's doubles in memory (every SSE register is caller-saved),
+  // which cost 6 % of the loop's instructions on the chute
+  [[maybe_unused]] int *defer = nullptr;
+  [[maybe_unused]] int ndefer = 0;
+  if constexpr ((M < 0 || G) && C == 0) {
+    if (G || gc_any) {
+      if (neighbor->ago == 0 || gc_defer.empty()) {  // sized by the list (at most every neighbour once)
+        std::size_t nn = 0;
+        for (int ii = 0; ii < inum; ii++) nn += numneigh[ilist[ii]];
+        if (gc_defer.size() < 2 * nn + 2) gc_defer.resize(2 * nn + 2);
+      }
+      defer = gc_defer.data();
+    }
+  }
+
   for (int ii = 0; ii < inum; ii++) {
     const int i = ilist[ii];
     const double xtmp = x[i][0];
     const double ytmp = x[i][1];
     const double ztmp = x[i][2];
     const double radi = radius[i];
-    const LawCoeffs *lawrow = ONE ? nullptr : lawtab + type[i] * ntp1;
+    const LawCoeffs *lawrow = ONE != 0 ? nullptr : lawtab + type[i] * ntp1;
     int *touch = firsttouch[i];
     double *allshear = firstshear[i];
     int *jlist = firstneigh[i];
@@ -259,6 +291,28 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
 
       // most neighbours do not touch (the list holds the skin too): tell the register allocator
       if (__builtin_expect(rsq >= radsum * radsum, 1)) {
+        if constexpr (M < 0 || G) {
+          // grid_correction: the first step after a corrected contact gets the end's impulse;
+          // the whole block (with the correction's values) is forgotten
+          // (a neighbour that did not touch at the last step has a cleared block already)
+          if (G || gc_any) {
+            if (touch[jj]) {
+              touch[jj] = 0;
+              const LawCoeffs &lw = ONE != 0 ? law1 : lawrow[type[j]];
+              if (lw.gc && shearupdate && tdem_lammps::gc_flags(shear, hsize) == tdem::grid::kFlagOn) {
+                if constexpr (C == 0) {  // after the loop (no call in it: see gc_defer)
+                  defer[ndefer++] = ~i;
+                  defer[ndefer++] = jj;
+                  continue;
+                } else {
+                  gc_separation_pair<M, E, S, TL, D>(i, j, shear, hsize, lw);
+                }
+              }
+              for (int m = 0; m < hsize; m++) shear[m] = 0.0;
+            }
+            continue;
+          }
+        }
         // not touching: forget the history
         touch[jj] = 0;
         if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
@@ -318,13 +372,33 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         }
       }
 
+      [[maybe_unused]] const int was_touching = (M < 0 || G) ? touch[jj] : 1;
       touch[jj] = 1;
-      const LawCoeffs &lawij = ONE ? law1 : lawrow[type[j]];
-      double ccel, fs[3], troll[3];
-      tdem_lammps::evaluate_contact<M, E, S, TL, D>(lawij, meff, delx, dely,
-                                                    delz, r, rinv, rsqinv, radsum - r, vr1, vr2,
-                                                    vr3, wr1, wr2, wr3, dt, shearupdate, shear,
-                                                    ccel, fs, radi, radj, omega[i], omega[j], troll);
+      const LawCoeffs &lawij = ONE != 0 ? law1 : lawrow[type[j]];
+      double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
+      bool corrected = false;
+      if constexpr (M < 0 || G) {
+        // the time-grid correction (grid_host.h): a contact's first step and the watched clip of
+        // a zero-force law; its other steps are the plain law below
+        if ((G || lawij.gc) && shearupdate &&
+            __builtin_expect(tdem_lammps::gc_needs(lawij, E, !was_touching, shear, hsize), 0)) {
+          if constexpr (C == 0) {  // after the loop (no call in it: see gc_defer)
+            defer[ndefer++] = i;
+            defer[ndefer++] = jj;
+            continue;
+          } else {
+            const tdem_lammps::GcContact k{&lawij, meff, delx, dely, delz, r, rinv, rsqinv, radsum - r,
+                                           {vr1, vr2, vr3}, {wr1, wr2, wr3}, dt, radi, radj, omega[i], omega[j]};
+            tdem_lammps::gc_contact<M, E, S, TL, D>(k, shear, hsize, ccel, fs, troll);
+            corrected = true;
+          }
+        }
+      }
+      if (!corrected)
+        tdem_lammps::evaluate_contact<M, E, S, TL, D>(lawij, meff, delx, dely,
+                                                      delz, r, rinv, rsqinv, radsum - r, vr1, vr2,
+                                                      vr3, wr1, wr2, wr3, dt, shearupdate, shear,
+                                                      ccel, fs, radi, radj, omega[i], omega[j], troll);
       if constexpr (C != 0) {
         // count / overlap: the whole contact force (normal and tangential) times s; the stored
         // tangential history is the law's own
@@ -376,12 +450,119 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
     }
   }
+  if constexpr ((M < 0 || G) && C == 0) {
+    if (ndefer) gc_deferred<M, E, S, TL, D>(defer, ndefer, ONE != 0 ? &law1 : nullptr);
+  }
+}
+
+// The deferred contacts of grid_correction (see eval): each contact's step with the correction
+// (grid_host.h) and its forces, as in the loop of eval; a separation's history block cleared.
+template <int M, int E, int S, int TL, int D>
+__attribute__((noinline)) void PairTDEMGran::gc_deferred(const int *defer, int n, const LawCoeffs *one)
+{
+  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
+  const double *radius = atom->radius;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair, ntp1 = atom_ntypes + 1;
+  const int hsize = size_history;
+  for (int k = 0; k < n; k += 2) {
+    const bool ends = defer[k] < 0;
+    const int i = ends ? ~defer[k] : defer[k], jj = defer[k + 1];
+    const int j = list->firstneigh[i][jj] & NEIGHMASK;
+    double *shear = &fix_history->firstvalue[i][hsize * jj];
+    const LawCoeffs &lw = one ? *one : law[atom->type[i] * ntp1 + atom->type[j]];
+    if (ends) {
+      gc_separation_pair<M, E, S, TL, D>(i, j, shear, hsize, lw);
+      for (int m = 0; m < hsize; m++) shear[m] = 0.0;
+      continue;
+    }
+    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+    const double rsq = delx * delx + dely * dely + delz * delz;
+    const double r = sqrt(rsq), rinv = 1.0 / r, rsqinv = 1.0 / rsq;
+    const double radi = radius[i], radj = radius[j];
+    const double mi = rigid.of(i, atom->rmass[i]), mj = rigid.of(j, atom->rmass[j]);
+    double meff = mi * mj / (mi + mj);
+    if (atom->mask[i] & freeze_group_bit) meff = mj;
+    if (atom->mask[j] & freeze_group_bit) meff = mi;
+    const tdem_lammps::GcContact c{&lw, meff, delx, dely, delz, r, rinv, rsqinv, radi + radj - r,
+                                   {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]},
+                                   {(radi * omega[i][0] + radj * omega[j][0]) * rinv,
+                                    (radi * omega[i][1] + radj * omega[j][1]) * rinv,
+                                    (radi * omega[i][2] + radj * omega[j][2]) * rinv},
+                                   dt, radi, radj, omega[i], omega[j]};
+    double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
+    tdem_lammps::gc_contact<M, E, S, TL, D>(c, shear, hsize, ccel, fs, troll);
+    const double fx = delx * ccel + fs[0], fy = dely * ccel + fs[1], fz = delz * ccel + fs[2];
+    const double tor1 = rinv * (dely * fs[2] - delz * fs[1]);
+    const double tor2 = rinv * (delz * fs[0] - delx * fs[2]);
+    const double tor3 = rinv * (delx * fs[1] - dely * fs[0]);
+    f[i][0] += fx;
+    f[i][1] += fy;
+    f[i][2] += fz;
+    torque[i][0] += -radi * tor1 + troll[0];
+    torque[i][1] += -radi * tor2 + troll[1];
+    torque[i][2] += -radi * tor3 + troll[2];
+    if (newton_pair || j < nlocal) {
+      f[j][0] -= fx;
+      f[j][1] -= fy;
+      f[j][2] -= fz;
+      torque[j][0] -= radj * tor1 + troll[0];
+      torque[j][1] -= radj * tor2 + troll[1];
+      torque[j][2] -= radj * tor3 + troll[2];
+    }
+    if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+  }
 }
 
 /* ---------------------------------------------------------------------- */
 
+// The first step without contact of pair (i, j) with grid_correction on (lw): the end's extra
+// impulse (grid_host.h), on i and, with newton or an owned j, on j. Cold: once per contact.
+template <int M, int E, int S, int TL, int D>
+void PairTDEMGran::gc_separation_pair(int i, int j, const double *shear, int hsize, const LawCoeffs &lw)
+{
+  double **x = atom->x, **v = atom->v, **omega = atom->omega;
+  const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
+  const double rsq = delx * delx + dely * dely + delz * delz;
+  const double r = sqrt(rsq), rinv = 1.0 / r, rsqinv = 1.0 / rsq;
+  const double radi = atom->radius[i], radj = atom->radius[j];
+  const double mi = rigid.of(i, atom->rmass[i]), mj = rigid.of(j, atom->rmass[j]);
+  double meff = mi * mj / (mi + mj);
+  if (atom->mask[i] & freeze_group_bit) meff = mj;
+  if (atom->mask[j] & freeze_group_bit) meff = mi;
+  const tdem_lammps::GcContact k{&lw, meff, delx, dely, delz, r, rinv, rsqinv, radi + radj - r,
+                                 {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]},
+                                 {(radi * omega[i][0] + radj * omega[j][0]) * rinv,
+                                  (radi * omega[i][1] + radj * omega[j][1]) * rinv,
+                                  (radi * omega[i][2] + radj * omega[j][2]) * rinv},
+                                 dt, radi, radj, omega[i], omega[j]};
+  double ccel, fs[3];
+  if (!tdem_lammps::gc_separation<M, E, S, TL, D>(k, shear, hsize, ccel, fs)) return;
+  double **f = atom->f, **torque = atom->torque;
+  const double fx = delx * ccel + fs[0], fy = dely * ccel + fs[1], fz = delz * ccel + fs[2];
+  f[i][0] += fx;
+  f[i][1] += fy;
+  f[i][2] += fz;
+  const double tor1 = rinv * (dely * fs[2] - delz * fs[1]);
+  const double tor2 = rinv * (delz * fs[0] - delx * fs[2]);
+  const double tor3 = rinv * (delx * fs[1] - dely * fs[0]);
+  torque[i][0] -= radi * tor1;
+  torque[i][1] -= radi * tor2;
+  torque[i][2] -= radi * tor3;
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  if (newton_pair || j < nlocal) {
+    f[j][0] -= fx;
+    f[j][1] -= fy;
+    f[j][2] -= fz;
+    torque[j][0] -= radj * tor1;
+    torque[j][1] -= radj * tor2;
+    torque[j][2] -= radj * tor3;
+  }
+  if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+}
+
 // history of j-i from that of i-j: the tangential spring flips sign, the normal-law slots
-// (xi_max of walton_braun) do not. Used by FixNeighHistory when nondefault_history_transfer.
+// (xi_max of walton_braun) and the time-grid correction's flags do not. Used by FixNeighHistory
+// when nondefault_history_transfer.
 void PairTDEMGran::transfer_history(TDEM_LMP_TRANSFER_HISTORY_PARAMS(source, target))
 {
   // the tangential block: vectors flip (kernel HistorySlot::flips_sign), scalars do not

@@ -88,12 +88,15 @@ class PairTDEMGran : public Pair {
   int umode, uend, uslip;
   int utlaw;  // the tangential law of all type pairs (TangentialLaw)
   bool one_law;  // every type pair has the same LawCoeffs (set by init_one of the last type pair)
+  bool gc_any;   // some type pair has grid_correction on (its values end every history block)
 
   class FixNeighHistory *fix_history;
   std::string id_history, id_dummy;
   // how the restart file this pair was read from stores the neighbor-history partner IDs
   // (tdem_lammps::compat::HistoryTags; -2: not read from a restart file)
   int restart_history_tags;
+  // history values per contact of the restart file this pair was read from (0: not read from one)
+  int restart_history_size;
 
   tdem_lammps::RigidMasses rigid;  // body masses of the spheres of rigid bodies
 
@@ -102,6 +105,12 @@ class PairTDEMGran : public Pair {
   tdem_lammps::ClumpCorrection clump;
 
   void allocate();
+  template <int M, int E, int S, int TL, int D>
+  [[gnu::cold, gnu::noinline]] void gc_separation_pair(int i, int j, const double *shear, int hsize,
+                                                       const tdem_lammps::LawCoeffs &lw);
+  template <int M, int E, int S, int TL, int D>
+  void gc_deferred(const int *defer, int n, const tdem_lammps::LawCoeffs *one);
+  std::vector<int> gc_defer;  // the contacts eval defers to gc_deferred (grid_correction)
   tdem_lammps::LawCoeffs &coeffs(int i, int j) { return law[i * (atom_ntypes + 1) + j]; }
   int atom_ntypes;
 };

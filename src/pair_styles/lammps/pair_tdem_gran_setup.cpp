@@ -120,6 +120,14 @@ void PairTDEMGran::init_style()
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j])
         need_history = MAX(need_history, tdem_lammps::law_history_size(coeffs(i, j), utlaw));
+  if (fix_history == nullptr && restart_history_size > 0 && need_history != restart_history_size)
+    error->all(FLERR,
+               "pair tdem/gran: the contacts of the restart file have " + std::to_string(restart_history_size) +
+                   " history values each, but the pair_coeff laws now need " + std::to_string(need_history) +
+                   "; a law with a different history size (grid_correction, rolling, walton_braun, thornton, "
+                   "power_law, the extended laws, another tangential law) cannot take over the contacts of a "
+                   "restart file (keep the restart's law, or start from a data file: write_data and read_data "
+                   "drop the contact history)");
   if (fix_history == nullptr)
     size_history = need_history;
   else if (need_history != size_history)
@@ -131,9 +139,18 @@ void PairTDEMGran::init_style()
                    "power_law, extended_linear, extended_hertz, or another tangential law) after a "
                    "run is not supported "
                    "(use clear, or define that law from the start)");
-  // the tangential spring flips sign with the pair order, xi_max does not
+  // grid_correction on for some type pair: its flags are the last value of every contact's history
+  gc_any = false;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && coeffs(i, j).gc) gc_any = true;
+  // the tangential spring flips sign with the pair order, xi_max does not (the correction's flags
+  // are read whatever their sign: LAMMPS's default, which negates all, keeps them)
   nondefault_history_transfer =
-      (size_history > tdem_lammps::TANGENTIAL_HISTORY || utlaw != tdem_lammps::TLAW_CUNDALL_STRACK) ? 1 : 0;
+      (size_history - (gc_any ? tdem::grid::history_size : 0) > tdem_lammps::TANGENTIAL_HISTORY ||
+       utlaw != tdem_lammps::TLAW_CUNDALL_STRACK)
+          ? 1
+          : 0;
 
   // on first init replace the placeholder with the FixNeighHistory that stores the history.
   // A restart file from another LAMMPS generation may store the history partners' IDs in the
@@ -373,13 +390,14 @@ double PairTDEMGran::single(int i, int j, int itype, int jtype, double rsq, doub
 // Version 6 appends the rolling resistance (LawCoeffs::roll, rp); versions 4 and 5 hold
 // LAW_COEFFS_V5_SIZE bytes. Version 7 stores the normal law's name (RESTART_NAME bytes) before
 // the LawCoeffs of each type pair, and the values of a unit law (LawCoeffs::uv): the reader takes
-// the law by its name and derives its parameters anew. In files of versions 2-6 walton_braun,
+// the law by its name and derives its parameters anew. Version 8 appends grid_correction
+// (LawCoeffs::gc); version 7 files hold LAW_COEFFS_V7_SIZE bytes. In files of versions 2-6 walton_braun,
 // thornton and power_law were modes 4-6 with members of their own (read_legacy_units).
 static constexpr int RESTART_NAME = 32;
 
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 7;
+  const int version = 8;
   fwrite(&version, sizeof(int), 1, fp);
   const int tags = (int) tdem_lammps::compat::history_tags();
   fwrite(&tags, sizeof(int), 1, fp);
@@ -401,16 +419,18 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version < 2 || version > 7)
+  if (version < 2 || version > 8)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads versions 2 to 7)");
+                          " cannot be read (this build reads versions 2 to 8)");
   int tags = (int) tdem_lammps::compat::HistoryTags::value;  // versions 2-4: LAMMPS 2022
   if (version >= 5) {
     if (me == 0) utils::sfread(FLERR, &tags, sizeof(int), 1, fp, nullptr, error);
     MPI_Bcast(&tags, 1, MPI_INT, 0, world);
   }
   restart_history_tags = tags;
-  const size_t nbytes = version >= 7   ? sizeof(LawCoeffs)
+  restart_history_size = 0;  // set below from the laws read
+  const size_t nbytes = version >= 8   ? sizeof(LawCoeffs)
+                        : version == 7 ? tdem_lammps::LAW_COEFFS_V7_SIZE
                         : version == 6 ? tdem_lammps::LAW_COEFFS_V6_SIZE
                         : version >= 4 ? tdem_lammps::LAW_COEFFS_V5_SIZE
                         : version == 3 ? tdem_lammps::LAW_COEFFS_V3_SIZE
@@ -444,4 +464,15 @@ void PairTDEMGran::read_restart(FILE *fp)
         coeffs(j, i) = c;
       }
     }
+  // the history values per contact the restart file's contacts carry (as init_style sizes them)
+  int tl = -1;
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j] && tl < 0) tl = coeffs(i, j).tlaw;
+  if (tl < 0) tl = tdem_lammps::TLAW_CUNDALL_STRACK;
+  restart_history_size = tdem_lammps::tangential_history_size(tl);
+  for (int i = 1; i <= atom->ntypes; i++)
+    for (int j = i; j <= atom->ntypes; j++)
+      if (setflag[i][j])
+        restart_history_size = MAX(restart_history_size, tdem_lammps::law_history_size(coeffs(i, j), tl));
 }

@@ -34,7 +34,7 @@ std::string num(double v) { return tdem::law::number_text(v); }
 // The words that end a law's values in pair_coeff and the wall fix (the laws' own group keywords
 // are known to their descriptions).
 bool host_keyword(const char *w) {
-  static const char *const keywords[] = {"normal", "tangential", "damping", "limit_force", "slip", "xplane",
+  static const char *const keywords[] = {"normal", "tangential", "damping", "limit_force", "slip", "grid_correction", "xplane",
                                          "yplane", "zplane", "zcylinder", "wiggle", "shear", "friction_limit",
                                          "rolling", nullptr};
   for (int k = 0; keywords[k]; ++k)
@@ -270,6 +270,13 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
       c.rp.kr = r.v[0], c.rp.gammar = r.v[1], c.rp.mur = r.v[2];
       c.roll = 1;
       iarg = r.next;
+    } else if (key == "grid_correction") {
+      if (iarg + 1 >= narg) fail(lmp, where, "keyword 'grid_correction' needs a value; allowed: on, off");
+      const std::string v = arg[iarg + 1];
+      if (v == "on") c.gc = 1;
+      else if (v == "off") c.gc = 0;
+      else fail(lmp, where, "grid_correction '" + v + "' is unknown; allowed: on, off");
+      iarg += 2;
     } else if (key == "slip") {
       if (iarg + 1 >= narg)
         fail(lmp, where, "keyword 'slip' needs a value; allowed: spring_dashpot, spring");
@@ -285,7 +292,7 @@ int parse_law(LAMMPS *lmp, const std::string &where, int narg, char **arg, int i
            "unexpected argument '" + key +
                "'; allowed options: damping mass|absolute, limit_force yes|no, "
                "slip spring_dashpot|spring, friction_limit absolute|positive_normal, "
-               "rolling sds KR GAMMAR MUR");
+               "rolling sds KR GAMMAR MUR, grid_correction on|off");
     }
   }
   derive_law(lmp, where, c);

@@ -23,6 +23,7 @@
 // where LAMMPS applies limit_damping.
 #pragma once
 
+#include "contact/grid_correction.h"
 #include "contact/laws.h"
 #include "contact/normal/extended.h"
 #include "contact/normal/hertz_damped.h"
@@ -216,12 +217,16 @@ struct LawCoeffs {
   // continuous_potential (MODE_CONT_POT): EPS N GAMMA in uv
   double uv[tdem::law::MAX_UNIT_VALUES] = {};
   tdem::law::ParamStore up{};
+  // ---- restart format version 8 appends the members below (version 7 files end here)
+  // grid_correction on|off (src/contact/grid_correction.h, grid_host.h): the start and end steps
+  int gc = 0, pad4 = 0;
 };
 // Bytes of LawCoeffs in restart files of version 2 (before the members of version 3), 3, and 4/5.
 inline constexpr size_t LAW_COEFFS_V2_SIZE = offsetof(LawCoeffs, legacy_pl);
 inline constexpr size_t LAW_COEFFS_V3_SIZE = offsetof(LawCoeffs, tlaw);
 inline constexpr size_t LAW_COEFFS_V5_SIZE = offsetof(LawCoeffs, roll);
 inline constexpr size_t LAW_COEFFS_V6_SIZE = offsetof(LawCoeffs, uv);
+inline constexpr size_t LAW_COEFFS_V7_SIZE = offsetof(LawCoeffs, gc);
 
 // The coefficients of a file of versions 2-6 in this build's form: walton_braun, thornton and
 // power_law (modes 4, 5, 6 there) become their units with the values of their legacy members.
@@ -234,9 +239,23 @@ const char *normal_name(const LawCoeffs &c);
 int mode_of_name(const char *name, int stored_mode);
 
 // History values of a type pair's law: the tangential block, the normal law's slots, then the
-// rolling displacement (3) when rolling resistance is on.
+// rolling displacement (3) when rolling resistance is on, then the time-grid correction's values
+// (tdem::grid::history_size; a host keeps them last: at hsize - that, hsize the host's largest).
 inline int law_history_size(const LawCoeffs &c, int tlaw) {
-  return history_size(c.mode, tlaw) + (c.roll ? tdem::rolling_sds::history_size : 0);
+  return history_size(c.mode, tlaw) + (c.roll ? tdem::rolling_sds::history_size : 0) +
+         (c.gc ? tdem::grid::history_size : 0);
+}
+
+// Does the contact end where the force reaches zero? A unit by its own convention (U::end), the
+// other laws by limit_force (LawCoeffs::end).
+template <class... U>
+constexpr bool unit_ends_at_zero_force(int k, tdem::law::Units<U...> *) {
+  constexpr bool r[sizeof...(U) > 0 ? sizeof...(U) : 1] = {(U::end == tdem::ContactEnd::zero_force)...};
+  return r[k];
+}
+inline bool ends_at_zero_force(const LawCoeffs &c) {
+  return is_unit(c.mode) ? unit_ends_at_zero_force(c.mode - MODE_UNIT, static_cast<NormalUnits *>(nullptr))
+                         : c.end != 0;
 }
 
 inline tdem::ContactEnd contact_end(int end) {
@@ -282,6 +301,8 @@ std::string describe_law(const LawCoeffs &c);
 // omega_t = n x (v_i - v_j)/r for a pair (radj > 0), 0 for a wall.
 //
 // D is the damping member of normal hertz (HertzDamping; used with E >= 0, -1 reads c.hdamp).
+// nres (optional): the normal law's result (force, elastic part, tangent stiffness, damping
+// coefficient), for the time-grid correction (grid_host.h).
 // Rolling-resistance torque on i (troll; the torque on j is -troll) of a contact with rolling
 // on: the rolling displacement follows the law's other history values. n = del / r points from j
 // to i; omega_j = nullptr is a wall (at rest); fn the normal force. troll stays 0 without rolling.
@@ -302,7 +323,7 @@ inline void rolling_torque(const LawCoeffs &c, int tlaw, double delx, double del
 template <class U>
 TDEM_KERNEL void unit_normal(const LawCoeffs &c, double meff, double overlap, double overlap_rate, double rinv,
                              double radi, double radj, double *h, bool update, double &ccel, double &kn_used,
-                             double &gn_used, double &kt) {
+                             double &gn_used, double &kt, tdem::NormalResult<double> *nres = nullptr) {
   tdem::NormalKinematics<double> kin;
   kin.overlap = overlap;
   kin.overlap_rate = overlap_rate;
@@ -313,37 +334,23 @@ TDEM_KERNEL void unit_normal(const LawCoeffs &c, double meff, double overlap, do
   kt = c.kappa * U::tangential_basis(p, res, kin);
   kn_used = res.stiffness, gn_used = res.damping;
   ccel = res.force * rinv;
+  if (nres) *nres = res;
 }
 
-template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK, int D = -1>
-inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, double dely,
-                             double delz, double r, double rinv, double rsqinv, double overlap,
-                             double vr1, double vr2, double vr3, double wr1, double wr2,
-                             double wr3, double dt, bool update, double *shear, double &ccel,
-                             double *fs, double radi = 0.0, double radj = 0.0,
-                             const double *omega_i = nullptr, const double *omega_j = nullptr,
-                             double *troll = nullptr) {
+// The normal law of one contact (the first part of evaluate_contact, also the time-grid
+// correction's probes): the force over distance ccel, the normal tangent stiffness and damping
+// coefficient for the tangential law, the cundall_strack parameters tp of the contact, and
+// optionally the law's result nres. hn: the normal law's history slots. M, E, D as for
+// evaluate_contact.
+template <int M, int E, int D = -1>
+TDEM_KERNEL void normal_contact(const LawCoeffs &c, double meff, double r, double rinv, double rsqinv,
+                                double overlap, double vnnr, double radi, double radj, double *hn, bool update,
+                                double &ccel, double &kn_used, double &gn_used,
+                                tdem::cundall_strack::Params<double> &tp, tdem::NormalResult<double> *nres) {
   const int mode = M >= 0 ? M : c.mode;
   const int end = E >= 0 ? E : c.end;
-  const int slip = S >= 0 ? S : c.slip;
-  const int tlaw = TL >= 0 ? TL : c.tlaw;
-  // the normal law's slots follow the tangential block
-  const int toff = tlaw == TLAW_CUNDALL_STRACK ? TANGENTIAL_HISTORY : tangential_history_size(tlaw);
-  // normal tangent stiffness and damping coefficient of this step (for the tangential law)
-  double kn_used = 0.0, gn_used = 0.0;
-
-  // normal component of the relative velocity, tangential rest
-  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
-  const double vn1 = delx * vnnr * rsqinv;
-  const double vn2 = dely * vnnr * rsqinv;
-  const double vn3 = delz * vnnr * rsqinv;
-  const double vt1 = vr1 - vn1;
-  const double vt2 = vr2 - vn2;
-  const double vt3 = vr3 - vn3;
-
   // coefficients of this contact
   tdem::lsd::Coefficients<double> nc;
-  tdem::cundall_strack::Params<double> tp;
   tp.mu = c.mu;
   if (mode == MODE_STIFFNESS_MASS) {
     nc.k = c.kn;
@@ -375,6 +382,7 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
                          : tdem::continuous_potential::force<tdem::ContactEnd::zero_overlap>(p, kin);
     ccel = res.force * rinv;
     kn_used = res.stiffness, gn_used = res.damping;
+    if (nres) *nres = res;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi
     tp.gammat = 0.0;
   } else if (mode == MODE_HERTZ) {
@@ -402,17 +410,18 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     }
     ccel = res.force * rinv;
     kn_used = res.stiffness, gn_used = res.damping;
+    if (nres) *nres = res;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * 2 E* a, tangent stiffness dF/dxi
     tp.gammat = 0.0;
   } else if (is_unit(mode)) {
     // a unit (src/contact/law_unit.h): its kernel on its history slots after the tangential block
     if constexpr (M >= MODE_UNIT) {
-      unit_normal<UnitOf<M>>(c, meff, overlap, -vnnr * rinv, rinv, radi, radj, shear + toff, update, ccel, kn_used,
-                             gn_used, tp.kt);
+      unit_normal<UnitOf<M>>(c, meff, overlap, -vnnr * rinv, rinv, radi, radj, hn, update, ccel, kn_used,
+                             gn_used, tp.kt, nres);
     } else {
       tdem::law::visit<NormalUnits>(mode - MODE_UNIT, [&](auto tag) {
-        unit_normal<typename decltype(tag)::type>(c, meff, overlap, -vnnr * rinv, rinv, radi, radj, shear + toff,
-                                                  update, ccel, kn_used, gn_used, tp.kt);
+        unit_normal<typename decltype(tag)::type>(c, meff, overlap, -vnnr * rinv, rinv, radi, radj, hn,
+                                                  update, ccel, kn_used, gn_used, tp.kt, nres);
       });
     }
     tp.gammat = 0.0;
@@ -423,12 +432,13 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = 0.0;
-    double *h = shear + toff;
+    double *h = hn;
     const auto res =
         end ? tdem::extended::linear_force<tdem::ContactEnd::zero_force>(c.ext, kin, h, update)
             : tdem::extended::linear_force<tdem::ContactEnd::zero_overlap>(c.ext, kin, h, update);
     ccel = res.force * rinv;
     kn_used = res.stiffness, gn_used = res.damping;
+    if (nres) *nres = res;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * k(v0)
     tp.gammat = 0.0;
   } else if (mode == MODE_EXT_HERTZ) {
@@ -441,12 +451,13 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
     kin.overlap_rate = -vnnr * rinv;
     kin.meff = meff;
     kin.reff = reff;
-    double *h = shear + toff;
+    double *h = hn;
     const auto res =
         end ? tdem::extended::hertz_force<tdem::ContactEnd::zero_force>(hp, kin, h, update)
             : tdem::extended::hertz_force<tdem::ContactEnd::zero_overlap>(hp, kin, h, update);
     ccel = res.force * rinv;
     kn_used = res.stiffness, gn_used = res.damping;
+    if (nres) *nres = res;
     tp.kt = c.kappa * res.stiffness;  // KAPPA * dF/dxi (Hertz tangent 3/2 k~ sqrt(xi))
     tp.gammat = 0.0;
   } else {
@@ -455,7 +466,38 @@ inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, doubl
       ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_force>(nc, overlap, vnnr, rinv, rsqinv);
     else
       ccel = tdem::lsd::force_over_distance<tdem::ContactEnd::zero_overlap>(nc, overlap, vnnr, rinv, rsqinv);
+    if (nres) *nres = {ccel * r, nc.k * overlap, nc.k, nc.gamma};  // the kernel's parts (grid correction)
   }
+
+}
+
+template <int M, int E, int S, int TL = TLAW_CUNDALL_STRACK, int D = -1>
+inline void evaluate_contact(const LawCoeffs &c, double meff, double delx, double dely,
+                             double delz, double r, double rinv, double rsqinv, double overlap,
+                             double vr1, double vr2, double vr3, double wr1, double wr2,
+                             double wr3, double dt, bool update, double *shear, double &ccel,
+                             double *fs, double radi = 0.0, double radj = 0.0,
+                             const double *omega_i = nullptr, const double *omega_j = nullptr,
+                             double *troll = nullptr, tdem::NormalResult<double> *nres = nullptr) {
+  const int slip = S >= 0 ? S : c.slip;
+  const int tlaw = TL >= 0 ? TL : c.tlaw;
+  // the normal law's slots follow the tangential block
+  const int toff = tlaw == TLAW_CUNDALL_STRACK ? TANGENTIAL_HISTORY : tangential_history_size(tlaw);
+  // normal tangent stiffness and damping coefficient of this step (for the tangential law)
+  double kn_used = 0.0, gn_used = 0.0;
+
+  // normal component of the relative velocity, tangential rest
+  const double vnnr = vr1 * delx + vr2 * dely + vr3 * delz;
+  const double vn1 = delx * vnnr * rsqinv;
+  const double vn2 = dely * vnnr * rsqinv;
+  const double vn3 = delz * vnnr * rsqinv;
+  const double vt1 = vr1 - vn1;
+  const double vt2 = vr2 - vn2;
+  const double vt3 = vr3 - vn3;
+
+  tdem::cundall_strack::Params<double> tp;
+  normal_contact<M, E, D>(c, meff, r, rinv, rsqinv, overlap, vnnr, radi, radj, shear + toff, update, ccel, kn_used,
+                          gn_used, tp, nres);
 
   // relative velocity of the contact point
   tdem::cundall_strack::Kinematics<double> tk;

@@ -164,8 +164,9 @@ const char *tangential_name(int tlaw) {
 }
 
 std::string describe_rolling(const LawCoeffs &c) {
-  if (!c.roll) return "";
-  return " rolling sds kr=" + num(c.rp.kr) + " gammar=" + num(c.rp.gammar) + " mur=" + num(c.rp.mur);
+  const std::string g = c.gc ? " grid_correction on" : "";
+  if (!c.roll) return g;
+  return " rolling sds kr=" + num(c.rp.kr) + " gammar=" + num(c.rp.gammar) + " mur=" + num(c.rp.mur) + g;
 }
 
 std::string describe_law(const LawCoeffs &c) {

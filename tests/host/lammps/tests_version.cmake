@@ -29,7 +29,19 @@ if(TARGET tdem-collide)
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_integrate.py ${_args}
                    --collide $<TARGET_FILE:tdem-collide> --part harness)
   set_tests_properties(${_pfx}.integrate_harness PROPERTIES LABELS ${_lbl} TIMEOUT 600)
+  # grid_correction on (issue 22): impacts vs tdem-collide --grid-correction on
+  add_test(NAME ${_pfx}.grid_correction_harness
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_grid_correction.py ${_args}
+                   --collide $<TARGET_FILE:tdem-collide> --part harness)
+  set_tests_properties(${_pfx}.grid_correction_harness PROPERTIES LABELS ${_lbl} TIMEOUT 600)
 endif()
+# grid_correction on: columns at rest unchanged, MPI + restart, bad input
+foreach(p unchanged mpi bad_input)
+  add_test(NAME ${_pfx}.grid_correction_${p}
+           COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_grid_correction.py ${_args} --part ${p})
+  set_tests_properties(${_pfx}.grid_correction_${p} PROPERTIES LABELS ${_lbl} TIMEOUT 600)
+endforeach()
+set_tests_properties(${_pfx}.grid_correction_mpi PROPERTIES PROCESSORS 2)
 # fix tdem/integrate (src/integrators/lammps): velocity_verlet = nve/sphere and free flight,
 # multi-step history through MPI and restart (two groups of schemes), bad input
 add_test(NAME ${_pfx}.integrate_nve
