@@ -192,16 +192,21 @@ TDEM_KERNEL T cap_factor(T ft_squared, T limit) noexcept {
 // which still holds that step, at the overlap one step back along the rate now. For the position
 // update of velocity Verlet (x+ = x + h v_half, the rate the force of plain velocity Verlet sees)
 // this is the last overlap up to the turn of the normal; for the other schemes it is O(h^2).
+// With a predicted velocity the estimate of a contact that ended just after its last step can come
+// out at or below zero; it is then taken as a millionth of the step's travel (the end at the last
+// step, where the model of the end stays regular: its elastic part over s is finite).
 template <class T>
 TDEM_KERNEL T previous_overlap(T xi, T xi_dot, T h) noexcept {
-  return xi - h * xi_dot;
+  const T x = xi - h * xi_dot;
+  const T floor = T(1e-6) * h * std::fabs(xi_dot);
+  return x > floor ? x : floor;
 }
 
 // Is the reconstructed last step a contact step whose end can be corrected? Its overlap must be
-// positive (and, for a zero-overlap end, above the overlap now), and for a zero-force end its
-// force positive. A scheme whose force sees a predicted velocity can make the one-step-back
-// overlap of a contact of a step or two (a graze in a dense bed) zero or negative; the end model
-// through such a point would be singular (s -> 0 with a finite force), so that end is left alone.
+// positive and, for a zero-overlap end, above the overlap now (a contact still approaching when it
+// is found ended was a graze seen through a predicted velocity), and for a zero-force end its force
+// positive. Otherwise the end model would be singular (s = 0 with a finite force); that end is left
+// alone.
 template <class T>
 TDEM_KERNEL bool end_usable(T xi_prev, T f_prev, T xi_now, bool at_zero_force) noexcept {
   if (!(xi_prev > T(0)) || !std::isfinite(f_prev)) return false;

@@ -248,10 +248,9 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
     }
   }
 
-  // grid_correction: the contacts whose step needs the correction (a start, an end, a watched
-  // clip) are deferred to after the loop as (i, jj) (a separation as (~i, jj)): a call in the loop
-  // would make the compiler keep the loop's doubles in memory (every SSE register is caller-saved),
-  // which cost 6 % of the loop's instructions on the chute
+  // grid_correction: the contacts whose step needs it (start, end, watched clip) are deferred to
+  // after the loop as (i, jj), a separation as (~i, jj): a call in the loop would keep the loop's
+  // doubles in memory (SSE registers are caller-saved), 6 % of the loop on the chute
   [[maybe_unused]] int *defer = nullptr;
   [[maybe_unused]] int ndefer = 0;
   if constexpr ((M < 0 || G) && C == 0) {
@@ -455,8 +454,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   }
 }
 
-// The deferred contacts of grid_correction (see eval): each contact's step with the correction
-// (grid_host.h) and its forces, as in the loop of eval; a separation's history block cleared.
+// The contacts eval deferred (grid_correction, grid_host.h): their steps and forces as in eval.
 template <int M, int E, int S, int TL, int D>
 __attribute__((noinline)) void PairTDEMGran::gc_deferred(const int *defer, int n, const LawCoeffs *one)
 {

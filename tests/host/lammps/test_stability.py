@@ -41,7 +41,32 @@ import stability_ref as S  # noqa: E402
 
 args = lc.parse_args(sys.argv)
 CASE = args.get("case")
-chk = lc.Checker("lammps.stability." + str(CASE))
+GC = args.get("grid-correction") == "on"
+chk = lc.Checker("lammps.stability%s." % ("_gc" if GC else "") + str(CASE))
+
+if GC:
+    # --grid-correction on: every tdem law of the case with `grid_correction on` (issue 22: the
+    # whole suite with the correction)
+    _run = lc.run
+
+    def _with_gc(line):
+        w = line.split()
+        if len(w) > 2 and w[0] == "pair_coeff" and "normal" in w:
+            return line + " grid_correction on"
+        if "tdem/wall/gran" in w and "normal" in w:
+            for k, x in enumerate(w):
+                if x in ("xplane", "yplane", "zplane", "zcylinder"):
+                    return " ".join(w[:k] + ["grid_correction", "on"] + w[k:])
+        return line
+
+    GC_LINES = [0]
+
+    def _run_gc(exe, text, *a, **kw):
+        lines = [_with_gc(l) for l in text.split("\n")]
+        GC_LINES[0] += sum(1 for l in lines if "grid_correction on" in l)
+        return _run(exe, "\n".join(lines), *a, **kw)
+
+    lc.run = _run_gc
 
 COLS = "id type mass radius x y z vx vy vz fx fy fz omegax omegay omegaz"
 
@@ -1094,4 +1119,6 @@ if __name__ == "__main__":
         print("unknown --case %r; allowed: %s" % (CASE, ", ".join(CASES)))
         sys.exit(2)
     CASES[CASE]()
+    if GC:
+        chk.check(GC_LINES[0] > 0, "grid_correction on in %d law lines of the case's inputs" % GC_LINES[0])
     chk.done()
