@@ -13,8 +13,11 @@
 # runs in its own process under callgrind, from the same data, for STEPS steps; the thermo line
 # after the run is printed too (for the chute it must be the same for both styles).
 #
-# usage: bench/lammps/callgrind_pair.sh [BUILD_DIR] [CHUTE_STEPS] [BED_STEPS] [NATOMS]
-#        (defaults: build, 200, 100, 100000; about 3 minutes)
+# With TDEM_CG_COMPARE=grid_correction the two runs per scene are tdem/gran with `grid_correction
+# off` and `on` (issue 22: the correction's cost in the pair loop) instead of stock and tdem.
+#
+# usage: [TDEM_CG_COMPARE=stock|grid_correction] bench/lammps/callgrind_pair.sh [BUILD_DIR]
+#        [CHUTE_STEPS] [BED_STEPS] [NATOMS]   (defaults: build, 200, 100, 100000; about 3 minutes)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 build=$(cd "${1:-$here/build}" && pwd)
@@ -40,16 +43,22 @@ cp "$bed" "$work/bed.data"
 KT=$(/usr/bin/python3 -c 'print(repr(200000.0 * 2.0 / 7.0))')
 GKK=$(/usr/bin/python3 -c 'print(repr(3.141592653589793 / 12.0 * 50.0 * 0.5))')
 
-scene() {  # $1 = chute|bed, $2 = stock|tdem, $3 = steps
+compare=${TDEM_CG_COMPARE:-stock}
+case $compare in stock) runs="stock tdem" ;; grid_correction) runs="tdem tdem_gc" ;;
+  *) echo "TDEM_CG_COMPARE=$compare: allowed stock, grid_correction" >&2; exit 2 ;; esac
+
+scene() {  # $1 = chute|bed, $2 = stock|tdem|tdem_gc, $3 = steps
   local data grav procs="" inter
   if [ "$1" = chute ]; then
     data=data.chute; grav="fix 1 all gravity 1.0 chute 26.0"
     if [ "$2" = stock ]; then inter=$'pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0\npair_coeff * *'
     else inter=$'pair_style tdem/gran\npair_coeff * * normal lsd stiffness 200000.0 50.0 tangential cundall_strack '"$KT"' 0.0 0.5'; fi
+    [ "$2" = tdem_gc ] && inter="$inter grid_correction on"
   else
     data=bed.data; grav="fix 1 all gravity 1.0 vector 0.0 0.0 -1.0"; procs="processors * * 1"
     if [ "$2" = stock ]; then inter=$'pair_style gran/hertz/history 200000.0 NULL 50.0 NULL 0.5 0\npair_coeff * *'
     else inter=$'pair_style tdem/gran\npair_coeff * * normal hertz 3e5 0 damping kuwabara_kono '"$GKK"' tangential cundall_strack 0.8 0.5'; fi
+    [ "$2" = tdem_gc ] && inter="$inter grid_correction on"
   fi
   cat <<EOS
 units lj
@@ -81,14 +90,16 @@ EOS
 
 echo "callgrind: pair compute() instructions, $(date -u '+%Y-%m-%d %H:%M UTC'), $exe"
 echo
-echo "| scene | steps | style | total instructions | pair compute() | pair tdem / stock | thermo after the run |"
+echo "| scene | steps | style | total instructions | pair compute() | pair second / first ($runs) | thermo after the run |"
 echo "|---|---|---|---|---|---|---|"
 . "$here/tools/progress.sh"
-progress_init "chute.stock:1 chute.tdem:1 bed.stock:1 bed.tdem:1"
+set -- $runs
+progress_init "chute.$1:1 chute.$2:1 bed.$1:1 bed.$2:1"
+first=$1
 for sc in chute bed; do
   steps=$chute_steps; [ $sc = bed ] && steps=$bed_steps
   stock_pair=""
-  for st in stock tdem; do
+  for st in $runs; do
     tag=$sc.$st
     scene $sc $st $steps > "$work/in.$tag"
     (cd "$work" && valgrind --tool=callgrind --callgrind-out-file="cg.$tag" "$exe" -in "in.$tag" \
@@ -98,10 +109,11 @@ for sc in chute bed; do
            grep -E 'PairGranHookeHistory::compute\(|PairGranHertzHistory::compute\(|PairTDEMGran::compute\(' |
            head -1 | awk '{gsub(",", "", $1); print $1}')
     thermo=$(awk '/^ *Step/ {f = 1; next} /^Loop time/ {f = 0} f {l = $0} END {gsub(/^ +| +$/, "", l); gsub(/ +/, " ", l); print l}' "$work/log.$tag")
-    if [ $st = stock ]; then stock_pair=$pair; ratio=""; else
+    if [ $st = "$first" ]; then stock_pair=$pair; ratio=""; else
       ratio=$(awk -v a="$pair" -v b="$stock_pair" 'BEGIN {printf "%.4f", a / b}'); fi
     name="gran/hooke/history"; [ $sc = bed ] && name="gran/hertz/history"
-    [ $st = tdem ] && { name="tdem/gran lsd + cundall_strack"; [ $sc = bed ] && name="tdem/gran hertz kuwabara_kono + cundall_strack"; }
+    [ $st != stock ] && { name="tdem/gran lsd + cundall_strack"; [ $sc = bed ] && name="tdem/gran hertz kuwabara_kono + cundall_strack"; }
+    [ $st = tdem_gc ] && name="$name, grid_correction on"
     echo "| $sc | $steps | \`$name\` | $total | $pair | $ratio | $thermo |"
     progress_done "$tag" >&2  # stderr: stdout is the table
   done

@@ -304,7 +304,11 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
                   defer[ndefer++] = jj;
                   continue;
                 } else {
-                  gc_separation_pair<M, E, S, TL, D>(i, j, shear, hsize, lw);
+                  const tdem_lammps::GcContact k = gc_pair_contact(i, j, lw);
+                  double cx, fsx[3];
+                  static const double none[3] = {0.0, 0.0, 0.0};
+                  if (tdem_lammps::gc_separation<M, E, S, TL, D>(k, shear, hsize, cx, fsx))
+                    gc_add_force(i, j, k, cx, fsx, none);
                 }
               }
               for (int m = 0; m < hsize; m++) shear[m] = 0.0;
@@ -458,104 +462,74 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
 template <int M, int E, int S, int TL, int D>
 __attribute__((noinline)) void PairTDEMGran::gc_deferred(const int *defer, int n, const LawCoeffs *one)
 {
-  double **x = atom->x, **v = atom->v, **f = atom->f, **omega = atom->omega, **torque = atom->torque;
-  const double *radius = atom->radius;
-  const int nlocal = atom->nlocal, newton_pair = force->newton_pair, ntp1 = atom_ntypes + 1;
-  const int hsize = size_history;
+  const int ntp1 = atom_ntypes + 1, hsize = size_history;
   for (int k = 0; k < n; k += 2) {
     const bool ends = defer[k] < 0;
     const int i = ends ? ~defer[k] : defer[k], jj = defer[k + 1];
     const int j = list->firstneigh[i][jj] & NEIGHMASK;
     double *shear = &fix_history->firstvalue[i][hsize * jj];
     const LawCoeffs &lw = one ? *one : law[atom->type[i] * ntp1 + atom->type[j]];
+    const tdem_lammps::GcContact c = gc_pair_contact(i, j, lw);
+    double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
     if (ends) {
-      gc_separation_pair<M, E, S, TL, D>(i, j, shear, hsize, lw);
+      // the first step without contact: the end's extra impulse, then the history is forgotten
+      if (tdem_lammps::gc_separation<M, E, S, TL, D>(c, shear, hsize, ccel, fs)) gc_add_force(i, j, c, ccel, fs, troll);
       for (int m = 0; m < hsize; m++) shear[m] = 0.0;
       continue;
     }
-    const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-    const double rsq = delx * delx + dely * dely + delz * delz;
-    const double r = sqrt(rsq), rinv = 1.0 / r, rsqinv = 1.0 / rsq;
-    const double radi = radius[i], radj = radius[j];
-    const double mi = rigid.of(i, atom->rmass[i]), mj = rigid.of(j, atom->rmass[j]);
-    double meff = mi * mj / (mi + mj);
-    if (atom->mask[i] & freeze_group_bit) meff = mj;
-    if (atom->mask[j] & freeze_group_bit) meff = mi;
-    const tdem_lammps::GcContact c{&lw, meff, delx, dely, delz, r, rinv, rsqinv, radi + radj - r,
-                                   {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]},
-                                   {(radi * omega[i][0] + radj * omega[j][0]) * rinv,
-                                    (radi * omega[i][1] + radj * omega[j][1]) * rinv,
-                                    (radi * omega[i][2] + radj * omega[j][2]) * rinv},
-                                   dt, radi, radj, omega[i], omega[j]};
-    double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
     tdem_lammps::gc_contact<M, E, S, TL, D>(c, shear, hsize, ccel, fs, troll);
-    const double fx = delx * ccel + fs[0], fy = dely * ccel + fs[1], fz = delz * ccel + fs[2];
-    const double tor1 = rinv * (dely * fs[2] - delz * fs[1]);
-    const double tor2 = rinv * (delz * fs[0] - delx * fs[2]);
-    const double tor3 = rinv * (delx * fs[1] - dely * fs[0]);
-    f[i][0] += fx;
-    f[i][1] += fy;
-    f[i][2] += fz;
-    torque[i][0] += -radi * tor1 + troll[0];
-    torque[i][1] += -radi * tor2 + troll[1];
-    torque[i][2] += -radi * tor3 + troll[2];
-    if (newton_pair || j < nlocal) {
-      f[j][0] -= fx;
-      f[j][1] -= fy;
-      f[j][2] -= fz;
-      torque[j][0] -= radj * tor1 + troll[0];
-      torque[j][1] -= radj * tor2 + troll[1];
-      torque[j][2] -= radj * tor3 + troll[2];
-    }
-    if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+    gc_add_force(i, j, c, ccel, fs, troll);
   }
 }
 
 /* ---------------------------------------------------------------------- */
 
-// The first step without contact of pair (i, j) with grid_correction on (lw): the end's extra
-// impulse (grid_host.h), on i and, with newton or an owned j, on j. Cold: once per contact.
-template <int M, int E, int S, int TL, int D>
-void PairTDEMGran::gc_separation_pair(int i, int j, const double *shear, int hsize, const LawCoeffs &lw)
+// The contact of pair (i, j) as the correction takes it (the geometry, the effective mass and the
+// relative velocities of the loop of eval).
+tdem_lammps::GcContact PairTDEMGran::gc_pair_contact(int i, int j, const LawCoeffs &lw)
 {
   double **x = atom->x, **v = atom->v, **omega = atom->omega;
   const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
   const double rsq = delx * delx + dely * dely + delz * delz;
-  const double r = sqrt(rsq), rinv = 1.0 / r, rsqinv = 1.0 / rsq;
+  const double r = sqrt(rsq), rinv = 1.0 / r;
   const double radi = atom->radius[i], radj = atom->radius[j];
   const double mi = rigid.of(i, atom->rmass[i]), mj = rigid.of(j, atom->rmass[j]);
   double meff = mi * mj / (mi + mj);
   if (atom->mask[i] & freeze_group_bit) meff = mj;
   if (atom->mask[j] & freeze_group_bit) meff = mi;
-  const tdem_lammps::GcContact k{&lw, meff, delx, dely, delz, r, rinv, rsqinv, radi + radj - r,
-                                 {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]},
-                                 {(radi * omega[i][0] + radj * omega[j][0]) * rinv,
-                                  (radi * omega[i][1] + radj * omega[j][1]) * rinv,
-                                  (radi * omega[i][2] + radj * omega[j][2]) * rinv},
-                                 dt, radi, radj, omega[i], omega[j]};
-  double ccel, fs[3];
-  if (!tdem_lammps::gc_separation<M, E, S, TL, D>(k, shear, hsize, ccel, fs)) return;
+  return {&lw, meff, delx, dely, delz, r, rinv, 1.0 / rsq, radi + radj - r,
+          {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]},
+          {(radi * omega[i][0] + radj * omega[j][0]) * rinv, (radi * omega[i][1] + radj * omega[j][1]) * rinv,
+           (radi * omega[i][2] + radj * omega[j][2]) * rinv},
+          dt, radi, radj, omega[i], omega[j]};
+}
+
+// Force ccel del + fs and its torques (+ the rolling torque troll) on i and, with newton or an
+// owned j, the opposite on j, as the loop of eval adds them.
+void PairTDEMGran::gc_add_force(int i, int j, const tdem_lammps::GcContact &c, double ccel, const double *fs,
+                                const double *troll)
+{
   double **f = atom->f, **torque = atom->torque;
-  const double fx = delx * ccel + fs[0], fy = dely * ccel + fs[1], fz = delz * ccel + fs[2];
+  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  const double fx = c.delx * ccel + fs[0], fy = c.dely * ccel + fs[1], fz = c.delz * ccel + fs[2];
+  const double tor1 = c.rinv * (c.dely * fs[2] - c.delz * fs[1]);
+  const double tor2 = c.rinv * (c.delz * fs[0] - c.delx * fs[2]);
+  const double tor3 = c.rinv * (c.delx * fs[1] - c.dely * fs[0]);
   f[i][0] += fx;
   f[i][1] += fy;
   f[i][2] += fz;
-  const double tor1 = rinv * (dely * fs[2] - delz * fs[1]);
-  const double tor2 = rinv * (delz * fs[0] - delx * fs[2]);
-  const double tor3 = rinv * (delx * fs[1] - dely * fs[0]);
-  torque[i][0] -= radi * tor1;
-  torque[i][1] -= radi * tor2;
-  torque[i][2] -= radi * tor3;
-  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
+  torque[i][0] += -c.radi * tor1 + troll[0];
+  torque[i][1] += -c.radi * tor2 + troll[1];
+  torque[i][2] += -c.radi * tor3 + troll[2];
   if (newton_pair || j < nlocal) {
     f[j][0] -= fx;
     f[j][1] -= fy;
     f[j][2] -= fz;
-    torque[j][0] -= radj * tor1;
-    torque[j][1] -= radj * tor2;
-    torque[j][2] -= radj * tor3;
+    torque[j][0] -= c.radj * tor1 + troll[0];
+    torque[j][1] -= c.radj * tor2 + troll[1];
+    torque[j][2] -= c.radj * tor3 + troll[2];
   }
-  if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, delx, dely, delz);
+  if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, c.delx, c.dely, c.delz);
 }
 
 // history of j-i from that of i-j: the tangential spring flips sign, the normal-law slots

@@ -35,6 +35,7 @@ PairStyle(tdem/gran,PairTDEMGran);
 #include "contact_host.h"
 
 #include "clump_correction_host.h"
+#include "grid_host.h"
 
 #include <vector>
 
@@ -105,9 +106,9 @@ class PairTDEMGran : public Pair {
   tdem_lammps::ClumpCorrection clump;
 
   void allocate();
-  template <int M, int E, int S, int TL, int D>
-  [[gnu::cold, gnu::noinline]] void gc_separation_pair(int i, int j, const double *shear, int hsize,
-                                                       const tdem_lammps::LawCoeffs &lw);
+  tdem_lammps::GcContact gc_pair_contact(int i, int j, const tdem_lammps::LawCoeffs &lw);
+  void gc_add_force(int i, int j, const tdem_lammps::GcContact &c, double ccel, const double *fs,
+                    const double *troll);
   template <int M, int E, int S, int TL, int D>
   void gc_deferred(const int *defer, int n, const tdem_lammps::LawCoeffs *one);
   std::vector<int> gc_defer;  // the contacts eval defers to gc_deferred (grid_correction)
