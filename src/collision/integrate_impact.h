@@ -246,7 +246,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     pp.q = grid::power_exponent(at.force - at.elastic, hf.force - hf.elastic, 0.0);
     return pp;
   };
-  // The extra acceleration of an end s after the previous step: the normal force from the power
+  // The extra force (normal fn_out, tangential ft_out) of an end s after the previous step: the normal force from the power
   // model through gc_prev (zero_overlap, at_zero_force = false) or linear to zero (a zero-force
   // end), the tangential force linear from gc_prev.ft to the law's value at the end (its history
   // of the previous step advanced by v_t s, the normal force there fe).
@@ -278,8 +278,17 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
                                         gc_prev.ft[2] * gc_prev.ft[2],
                                     law_prev.friction(), gc_prev.fn);
   };
+  // F = F_n n + F_t on the sphere as accelerations; torque -R n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
+  auto to_acceleration = [&](double fn, const double* ft, Acc& out) {
+    out.a[0] = ft[0] / m;
+    out.a[1] = ft[1] / m;
+    out.a[2] = (fn + ft[2]) / m;
+    out.al[0] = R * ft[1] / I;
+    out.al[1] = -R * ft[0] / I;
+    out.al[2] = 0.0;
+  };
   auto end_correction = [&](const Y& y, const TangentialLaw& law, double xi_dot, double s, bool at_zero_force,
-                            Acc& out) {
+                            double& fn_out, double* ft_out) {
     if (std::isfinite(gc_touch_time) && !std::isfinite(r.contact_time_interpolated))
       r.contact_time_interpolated = r.steps * h + s - gc_touch_time;
     double fn_x, fe;
@@ -302,12 +311,8 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       ft_x[i] = gc_prev.sliding ? gc_prev.ft[i] / gc_prev.fn * (fn_x + gc_prev.fn) - gc_prev.ft[i]
                                 : grid::end_extra(gc_prev.ft[i], gc_prev.ft[i] - fte, 1.0, fte, 0.0, s, h);
     }
-    out.a[0] = ft_x[0] / m;
-    out.a[1] = ft_x[1] / m;
-    out.a[2] = (fn_x + ft_x[2]) / m;
-    out.al[0] = R * ft_x[1] / I;
-    out.al[1] = -R * ft_x[0] / I;
-    out.al[2] = 0.0;
+    fn_out = fn_x;
+    for (int i = 0; i < 3; ++i) ft_out[i] = ft_x[i];
   };
   auto evaluate = [&](const Y& y, TangentialLaw& law, double incr_dt, const double* vt_incr, bool commit_normal,
                       Acc& out) {
@@ -327,7 +332,11 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         // the last contact step)
         reconstruct_prev(y, law, xi, xi_dot);
         if (grid::end_usable(gc_prev.xi, gc_prev.fn, xi, false))
-          end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, out);
+        {
+          double fn_x, ft_x[3];
+          end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, fn_x, ft_x);
+          to_acceleration(fn_x, ft_x, out);
+        }
       }
       if (gc) gc_prev = GcPrev{};
       return false;
@@ -407,20 +416,14 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         else
           s_end = grid::end_time(gc_prev.fn, gc_prev.fn + gc_prev.k * xi_dot * h, h);
         if (grid::end_usable(gc_prev.xi, gc_prev.fn, xi, true)) {
-          Acc extra;
-          end_correction(y, fresh_or_prev, xi_dot, s_end, true, extra);
-          fn_apply += extra.a[2] * m;
-          for (int i = 0; i < 2; ++i) ft_apply[i] += extra.a[i] * m;
+          double fn_x, ft_x[3];
+          end_correction(y, fresh_or_prev, xi_dot, s_end, true, fn_x, ft_x);
+          fn_apply += fn_x;
+          for (int i = 0; i < 3; ++i) ft_apply[i] += ft_x[i];
         }
       }
     }
-    // F = F_n n + F_t; torque -R n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
-    out.a[0] = ft_apply[0] / m;
-    out.a[1] = ft_apply[1] / m;
-    out.a[2] = (fn_apply + ft_apply[2]) / m;
-    out.al[0] = R * ft_apply[1] / I;
-    out.al[1] = -R * ft_apply[0] / I;
-    out.al[2] = 0.0;
+    to_acceleration(fn_apply, ft_apply, out);
     last.xi = xi, last.xi_dot = xi_dot, last.fn = nr.force, last.ft_t = ft[0], last.vs_t = out.vt[0];
     last.sliding = sliding;
     return true;
