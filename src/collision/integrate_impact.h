@@ -142,6 +142,10 @@ struct ImpactOptions {
                                    // evaluation schemes; the multi-evaluation ones ignore it)
   long max_steps = 100000000;      // give up (ended = false)
   double max_contact_times = 100.0;
+  // lever arm of the tangential force c = R - lever_factor xi: 0 the radius (default), 0.5 the
+  // contact point as LIGGGHTS's surface model (also in the slip velocity; at an end step, where xi
+  // < 0, as LIGGGHTS computes it there)
+  double lever_factor = 0.0;
 };
 
 struct ImpactResult : ObliqueResult {
@@ -210,13 +214,15 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
   // update = false (commit = stage rule); incr_dt < 0: the host rule (one call, update = true,
   // dt = h, the slip velocity of y). commit_normal: the normal law's update flag.
   bool in_contact_prev = false;
+  auto lever = [&](double xi) { return R - opt.lever_factor * xi; };
   auto geometry = [&](const Y& y, double& xi, double* vt) {
     xi = R - y.x()[2];
-    // v_rel = v - R w x n, n = z: w x n = (w_y, -w_x, 0)
+    // v_rel = v - c w x n, n = z: w x n = (w_y, -w_x, 0)
     const double* v = y.v();
     const double* w = y.w();
-    vt[0] = v[0] - R * w[1];
-    vt[1] = v[1] + R * w[0];
+    const double c = lever(xi);
+    vt[0] = v[0] - c * w[1];
+    vt[1] = v[1] + c * w[0];
     vt[2] = 0.0;
   };
   struct Last {
@@ -278,13 +284,14 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
                                         gc_prev.ft[2] * gc_prev.ft[2],
                                     law_prev.friction(), gc_prev.fn);
   };
-  // F = F_n n + F_t on the sphere as accelerations; torque -R n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
-  auto to_acceleration = [&](double fn, const double* ft, Acc& out) {
+  // F = F_n n + F_t on the sphere as accelerations; torque -c n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
+  auto to_acceleration = [&](double fn, const double* ft, double xi, Acc& out) {
+    const double c = lever(xi);
     out.a[0] = ft[0] / m;
     out.a[1] = ft[1] / m;
     out.a[2] = (fn + ft[2]) / m;
-    out.al[0] = R * ft[1] / I;
-    out.al[1] = -R * ft[0] / I;
+    out.al[0] = c * ft[1] / I;
+    out.al[1] = -c * ft[0] / I;
     out.al[2] = 0.0;
   };
   auto end_correction = [&](const Y& y, const TangentialLaw& law, double xi_dot, double s, bool at_zero_force,
@@ -335,7 +342,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         {
           double fn_x, ft_x[3];
           end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, fn_x, ft_x);
-          to_acceleration(fn_x, ft_x, out);
+          to_acceleration(fn_x, ft_x, xi, out);
         }
       }
       if (gc) gc_prev = GcPrev{};
@@ -423,7 +430,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         }
       }
     }
-    to_acceleration(fn_apply, ft_apply, out);
+    to_acceleration(fn_apply, ft_apply, xi, out);
     last.xi = xi, last.xi_dot = xi_dot, last.fn = nr.force, last.ft_t = ft[0], last.vs_t = out.vt[0];
     last.sliding = sliding;
     return true;

@@ -182,6 +182,7 @@ double constant_normal_stiffness(const Run& run) {
 template <class Law, class TLaw>
 void scheme_reference(Run& run, const Law& law, const TLaw& tlaw) {
   SchemeRun& S = run.sch;
+  if (S.opt.lever_factor != 0.0) return;  // the closed form has the lever arm R
   if constexpr (std::is_same_v<Law, collision::LsdLaw> &&
                 (std::is_same_v<TLaw, collision::Frictionless> ||
                  std::is_same_v<TLaw, collision::CundallStrackTangential>)) {

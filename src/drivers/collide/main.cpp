@@ -84,8 +84,6 @@ Run run(Args& a) {
     if (!a.has("--wall"))
       throw BadInput("option --scheme needs --wall (the whole-step integration is a sphere-wall impact)");
     a.require("--R1", "with --scheme (the sphere starts at z = R1 + gap)");
-    if (run.obl.opt.lever != collision::LeverArm::radius)
-      throw BadInput("option --lever-arm contact_point cannot be used with --scheme (allowed: radius)");
     S.setup.m = b.m1;
     S.setup.R = b.R1;
     S.setup.speed = speed;
@@ -105,6 +103,7 @@ Run run(Args& a) {
                        "' evaluates the force " + std::to_string(S.scheme.evaluations()) + " times per step");
     }
     S.opt.dt = opt.dt;
+    S.opt.lever_factor = run.obl.opt.lever == collision::LeverArm::contact_point ? 0.5 : 0.0;
     S.opt.steps_per_contact = a.has("--steps") ? opt.steps_per_contact : 1000;
     S.opt.record = opt.record;
   } else {

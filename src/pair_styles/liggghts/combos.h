@@ -40,6 +40,15 @@ inline constexpr int tdem_tangentials[] = {TDEM_HAFF_WERNER,         TDEM_LINEAR
 inline constexpr int basic_tangentials[] = {TDEM_CUNDALL_STRACK, TANGENTIAL_HISTORY, TANGENTIAL_OFF};
 inline constexpr int stock_normals[] = {HERTZ, HOOKE};
 
+// The combinations whose contact model is tdem's (tdem_liggghts_grid.h: LIGGGHTS's sequence of
+// the five models, and the keyword grid_correction): a tdem normal law with the default surface.
+constexpr bool tdem_contact_model(int normal, int surface) {
+  if (surface != SURFACE_DEFAULT) return false;
+  for (int n : tdem_normals)
+    if (n == normal) return true;
+  return false;
+}
+
 // ---------------------------------------------------------------- the list of combinations
 struct Combo {
   int normal, tangential, cohesion, rolling, surface;

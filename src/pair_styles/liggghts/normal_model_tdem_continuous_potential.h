@@ -80,7 +80,8 @@ class NormalModel<TDEM_CONTINUOUS_POTENTIAL> : public NormalModelBase {
     const tdem::continuous_potential::Params<double> p{pc.eps, d, pc.n, d, pc.gamma};
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, 0.0};
     const tdem::NormalResult<double> r = tdem::continuous_potential::force(end_, p, kin);
-    tdem::liggghts::apply_normal_result(sidata, r.force, r.stiffness, pc.kappa * r.stiffness, r.damping, i_forces, j_forces);
+    tdem::liggghts::publish_normal_result(sidata, r.force, r.stiffness, pc.kappa * r.stiffness, r.damping);
+    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
   }
 
   void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {

@@ -179,8 +179,15 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
 
   inline double stressStrainExponent() { return 1.; }
 
-  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces,
-                                ForceData& j_forces) {
+  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    law(sidata);
+    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+  }
+
+  // The law on the contact data (the part of surfacesIntersect before the force is applied):
+  // its result, published to sidata for the tangential law. Also the grid correction's probe
+  // (tdem_liggghts_grid.h).
+  inline tdem::NormalResult<double> law(SurfacesIntersectData& sidata) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
       tdem::liggghts::zero_distance(lmp, "model tdem/lsd", sidata.i, sidata.j, sidata.is_wall);
@@ -208,19 +215,18 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
     // reff is not used by the linear law.
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, meff, 0.0};
     const tdem::lsd::Coefficients<double> co{kn, gamman};
-    const double Fn = end_ == tdem::ContactEnd::zero_force
-                          ? tdem::lsd::force<tdem::ContactEnd::zero_force>(co, kin).force
-                          : tdem::lsd::force<tdem::ContactEnd::zero_overlap>(co, kin).force;
-
-    sidata.Fn = Fn;
+    const tdem::NormalResult<double> r = end_ == tdem::ContactEnd::zero_force
+                                             ? tdem::lsd::force<tdem::ContactEnd::zero_force>(co, kin)
+                                             : tdem::lsd::force<tdem::ContactEnd::zero_overlap>(co, kin);
+    sidata.Fn = r.force;
     sidata.kn = kn;
     sidata.kt = kt;
     sidata.gamman = gamman;
     sidata.gammat = gammat;
-
-    // apply the normal force (same arithmetic as the stock LIGGGHTS normal models)
-    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+    return r;
   }
+  tdem::ContactEnd contact_end() const { return end_; }
+  static constexpr bool linear = true;  // exponents 1 (elastic) and 0 (damping): no probe needed
 
   void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <type_traits>
 
 #include "contact_models.h"
 // fix_insert_stream_predefined.h (included by pair_gran_base.h) is a stub in LIGGGHTS-PUBLIC
@@ -22,6 +23,8 @@
 #include "tangential_model_tdem_cundall_strack.h"
 #include "tangential_model_tdem_laws.h"
 #include "rolling_model_tdem_sds.h"
+#include "combos.h"
+#include "tdem_liggghts_grid.h"
 
 namespace tdem {
 namespace liggghts {
@@ -45,7 +48,8 @@ template <int N, int T, int C = LIGGGHTS::ContactModels::COHESION_OFF,
           int R = LIGGGHTS::ContactModels::ROLLING_OFF, int S = LIGGGHTS::ContactModels::SURFACE_DEFAULT>
 void register_combo() {
   using Style = LIGGGHTS::ContactModels::GranStyle<N, T, C, R, S>;
-  using CModel = LIGGGHTS::ContactModels::ContactModel<Style>;
+  using CModel = std::conditional_t<combos::tdem_contact_model(N, S), LIGGGHTS::ContactModels::TdemContactModel<Style>,
+                                    LIGGGHTS::ContactModels::ContactModel<Style>>;
   const int64_t hash = Style::HASHCODE;
   LIGGGHTS::PairStyles::Factory::instance().addStyle("gran", static_cast<int>(hash), &create_pair<CModel>);
   LIGGGHTS::Walls::Factory::instance().addStyle("gran", static_cast<int>(hash), &create_wall<CModel>);

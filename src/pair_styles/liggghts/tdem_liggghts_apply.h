@@ -41,18 +41,15 @@ inline void apply_normal_force(const LIGGGHTS::ContactModels::SurfacesIntersectD
   }
 }
 
-// Publish a normal law's result to the contact data (force, stiffnesses and damping that the
-// tangential law reads; no tangential damping) and apply the force.
-inline void apply_normal_result(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, double fn,
-                                double kn, double kt, double gamman,
-                                LIGGGHTS::ContactModels::ForceData& i_forces,
-                                LIGGGHTS::ContactModels::ForceData& j_forces) {
+// Publish a normal law's result to the contact data: force, stiffnesses and damping that the
+// tangential law reads; no tangential damping.
+inline void publish_normal_result(LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, double fn, double kn,
+                                  double kt, double gamman) {
   sidata.Fn = fn;
   sidata.kn = kn;
   sidata.kt = kt;
   sidata.gamman = gamman;
   sidata.gammat = 0.0;
-  apply_normal_force(sidata, i_forces, j_forces);
 }
 
 }  // namespace liggghts

@@ -31,9 +31,32 @@ import tdem_lig as T  # noqa: E402
 import stability_ref as S  # noqa: E402
 
 args = T.parse_args(lambda p: (p.add_argument("--case", required=True),
-                               p.add_argument("--collide", default=None)))
+                               p.add_argument("--collide", default=None),
+                               p.add_argument("--grid-correction", choices=("on", "off"), default="off")))
 CASE = args.case
 chk = T.Checks()
+GC_LINES = [0]
+if args.grid_correction == "on":
+    # every tdem normal law of the case with `grid_correction on` (issue 22: the whole suite with
+    # the correction); the keyword goes last, after the wall of a wall/gran line
+    _run = T.run
+
+    def _with_gc(line):
+        w = line.split()
+        tdem_model = any(w[k] == "model" and w[k + 1].startswith("tdem/") for k in range(len(w) - 1))
+        clump = "tdem/clump" in w
+        if tdem_model and not clump and ((w[:2] == ["pair_style", "gran"]) or "wall/gran" in w):
+            return line + " grid_correction on"
+        return line
+
+    def _run_gc(exe, text, *a, **kw):
+        lines = [_with_gc(l) for l in text.split("\n")]
+        GC_LINES[0] += sum(1 for l in lines if "grid_correction on" in l)
+        return _run(exe, "\n".join(lines), *a, **kw)
+
+    T.run = _run_gc
+    _workdir = T.workdir
+    T.workdir = lambda a, name: _workdir(a, name + "_gc")  # apart from the run without the correction
 
 COLS = "id type mass radius x y z vx vy vz fx fy fz omegax omegay omegaz".split()
 R5, RHO = 0.005, 2500.0
@@ -962,6 +985,8 @@ if __name__ == "__main__":
         print("unknown --case %r; allowed: %s" % (CASE, ", ".join(CASES)))
         sys.exit(2)
     CASES[CASE]()
+    if args.grid_correction == "on":
+        chk.check(GC_LINES[0] > 0, "grid_correction on in %d law lines of the case's inputs" % GC_LINES[0])
     chk.done()
     if chk.failed:
         sys.exit(1)
