@@ -15,7 +15,8 @@
 # averaged).
 #
 # Not part of ctest. Usage:
-#   [BASE=/path/to/old/tdem-liggghts] callgrind_grid.sh [tdem-liggghts] [natoms] [pre] [cg_steps]
+#   [BASE=/path/to/old/tdem-liggghts] [LAWS="lsd hertz"] callgrind_grid.sh [tdem-liggghts] [natoms] [pre] [cg_steps]
+# pre = 3000: the forming bed (default); pre = 20000: a bed nearly at rest (few events).
 set -eu
 EXE=${1:-$(dirname "$0")/../../build/bin/tdem-liggghts}
 NATOMS=${2:-4000}
@@ -111,7 +112,7 @@ count() { # $1 exe, $2 tag, $3 model, $4 settings, $5 properties
 
 LSD="model tdem/lsd tangential tdem/cundall_strack"
 HZ="model tdem/hertz tangential tdem/cundall_strack"
-for law in lsd hertz; do
+for law in ${LAWS:-lsd hertz}; do
   if [ $law = lsd ]; then M=$LSD; S=""; P=$STIFF; else M=$HZ; S="damping tsuji"; P=$MAT; fi
   [ -z "${BASE:-}" ] || count "$BASE" "${law}_off_base" "$M" "$S" "$P"
   count "$EXE" "${law}_off" "$M" "$S" "$P"
@@ -119,7 +120,7 @@ for law in lsd hertz; do
 done
 
 echo
-echo "callgrind: instructions in the pair style's compute_force, $CG_STEPS steps, $NATOMS spheres still falling (after $PRE steps)"
+echo "callgrind: instructions in the pair style's compute_force, $CG_STEPS steps, $NATOMS spheres after $PRE steps of settling"
 echo
 awk '{ ins[$1] = $2; nc[$1] = $3; order[NR] = $1 } END {
   print "| case | touching pairs | instructions | ratio |"; print "|---|---|---|---|";

@@ -41,7 +41,8 @@ inline constexpr int basic_tangentials[] = {TDEM_CUNDALL_STRACK, TANGENTIAL_HIST
 inline constexpr int stock_normals[] = {HERTZ, HOOKE};
 
 // The combinations whose contact model is tdem's (tdem_liggghts_grid.h: LIGGGHTS's sequence of
-// the five models, and the keyword grid_correction): a tdem normal law with the default surface.
+// the five models, and the keyword grid_correction, each compiled twice: without and with the
+// correction): a tdem normal law with the default surface.
 constexpr bool tdem_contact_model(int normal, int surface) {
   if (surface != SURFACE_DEFAULT) return false;
   for (int n : tdem_normals)

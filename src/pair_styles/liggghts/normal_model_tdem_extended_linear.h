@@ -94,12 +94,14 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
 
   inline double stressStrainExponent() { return 1.; }
 
-  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
-    law(sidata);
-    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+  // the two entry points of evaluate() (tdem_liggghts_apply.h)
+  [[gnu::flatten]] void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    tdem::liggghts::intersect(*this, sidata, i_forces, j_forces);
   }
+  tdem::NormalResult<double> law(SurfacesIntersectData& sidata) { return tdem::liggghts::law_result(*this, sidata); }
   // The law on the contact data, its result published to sidata (see normal_model_tdem_lsd.h).
-  inline tdem::NormalResult<double> law(SurfacesIntersectData& sidata) {
+  template <bool Result>
+  [[gnu::always_inline]] inline void evaluate(SurfacesIntersectData& sidata, tdem::NormalResult<double>* out) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
       tdem::liggghts::zero_distance(lmp, "model tdem/extended_linear", sidata.i, sidata.j, sidata.is_wall);
@@ -115,7 +117,7 @@ class NormalModel<TDEM_EXTENDED_LINEAR> : public NormalModelBase {
             ? tdem::extended::linear_force<tdem::ContactEnd::zero_force>(pc.p, kin, hist, update)
             : tdem::extended::linear_force<tdem::ContactEnd::zero_overlap>(pc.p, kin, hist, update);
     tdem::liggghts::publish_normal_result(sidata, r.force, r.stiffness, pc.kappa * r.stiffness, r.damping);
-    return r;
+    if constexpr (Result) *out = r;
   }
   tdem::ContactEnd contact_end() const { return end_; }
   static constexpr bool linear = false;

@@ -153,12 +153,14 @@ class TdemHistoryNormalModel : public NormalModelBase {
     publish_advice();
   }
 
-  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
-    law(sidata);
-    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+  // the two entry points of evaluate() (tdem_liggghts_apply.h)
+  [[gnu::flatten]] void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    tdem::liggghts::intersect(*this, sidata, i_forces, j_forces);
   }
+  tdem::NormalResult<double> law(SurfacesIntersectData& sidata) { return tdem::liggghts::law_result(*this, sidata); }
   // The law on the contact data, its result published to sidata (see normal_model_tdem_lsd.h).
-  inline tdem::NormalResult<double> law(SurfacesIntersectData& sidata) {
+  template <bool Result>
+  [[gnu::always_inline]] inline void evaluate(SurfacesIntersectData& sidata, tdem::NormalResult<double>* out) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
       tdem::liggghts::zero_distance_of_law(lmp, U::description.name, sidata.i, sidata.j, sidata.is_wall);
@@ -173,7 +175,7 @@ class TdemHistoryNormalModel : public NormalModelBase {
     const tdem::NormalKinematics<double> kin{sidata.deltan, -sidata.vn, sidata.meff, reff};
     const tdem::NormalResult<double> r = U::force(pc.p, kin, hist, store);
     tdem::liggghts::publish_normal_result(sidata, r.force, r.stiffness, pc.kappa * U::tangential_basis(pc.p, r, kin), 0.0);
-    return r;
+    if constexpr (Result) *out = r;
   }
   tdem::ContactEnd contact_end() const { return U::end; }
   static constexpr bool linear = false;

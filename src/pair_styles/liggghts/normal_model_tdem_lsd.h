@@ -179,15 +179,16 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
 
   inline double stressStrainExponent() { return 1.; }
 
-  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
-    law(sidata);
-    tdem::liggghts::apply_normal_force(sidata, i_forces, j_forces);
+  // the two entry points of evaluate() (tdem_liggghts_apply.h)
+  [[gnu::flatten]] void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    tdem::liggghts::intersect(*this, sidata, i_forces, j_forces);
   }
+  tdem::NormalResult<double> law(SurfacesIntersectData& sidata) { return tdem::liggghts::law_result(*this, sidata); }
 
-  // The law on the contact data (the part of surfacesIntersect before the force is applied):
-  // its result, published to sidata for the tangential law. Also the grid correction's probe
-  // (tdem_liggghts_grid.h).
-  inline tdem::NormalResult<double> law(SurfacesIntersectData& sidata) {
+  // The law on the contact data (the part of surfacesIntersect before the force is applied), its
+  // result published to sidata for the tangential law and, if Result, written to *out.
+  template <bool Result>
+  [[gnu::always_inline]] inline void evaluate(SurfacesIntersectData& sidata, tdem::NormalResult<double>* out) {
     if (sidata.contact_flags) *sidata.contact_flags |= CONTACT_NORMAL_MODEL;
     if (__builtin_expect(!(sidata.r > 0.0), 0))  // coincident centres: no normal
       tdem::liggghts::zero_distance(lmp, "model tdem/lsd", sidata.i, sidata.j, sidata.is_wall);
@@ -223,7 +224,7 @@ class NormalModel<TDEM_LSD> : public NormalModelBase {
     sidata.kt = kt;
     sidata.gamman = gamman;
     sidata.gammat = gammat;
-    return r;
+    if constexpr (Result) *out = r;
   }
   tdem::ContactEnd contact_end() const { return end_; }
   static constexpr bool linear = true;  // exponents 1 (elastic) and 0 (damping): no probe needed

@@ -5,7 +5,6 @@
 #pragma once
 
 #include <cstdint>
-#include <type_traits>
 
 #include "contact_models.h"
 // fix_insert_stream_predefined.h (included by pair_gran_base.h) is a stub in LIGGGHTS-PUBLIC
@@ -44,16 +43,25 @@ LIGGGHTS::Walls::IGranularWall* create_wall(LAMMPS_NS::LAMMPS* lmp, LAMMPS_NS::F
   return new LIGGGHTS::Walls::Granular<CModel>(lmp, parent, hash);
 }
 
+// The pair and wall creators of contact model CModel under its hash.
+template <class CModel>
+void add() {
+  const int64_t hash = CModel::STYLE_HASHCODE;
+  LIGGGHTS::PairStyles::Factory::instance().addStyle("gran", static_cast<int>(hash), &create_pair<CModel>);
+  LIGGGHTS::Walls::Factory::instance().addStyle("gran", static_cast<int>(hash), &create_wall<CModel>);
+  note_compiled(hash);
+}
+
 template <int N, int T, int C = LIGGGHTS::ContactModels::COHESION_OFF,
           int R = LIGGGHTS::ContactModels::ROLLING_OFF, int S = LIGGGHTS::ContactModels::SURFACE_DEFAULT>
 void register_combo() {
   using Style = LIGGGHTS::ContactModels::GranStyle<N, T, C, R, S>;
-  using CModel = std::conditional_t<combos::tdem_contact_model(N, S), LIGGGHTS::ContactModels::TdemContactModel<Style>,
-                                    LIGGGHTS::ContactModels::ContactModel<Style>>;
-  const int64_t hash = Style::HASHCODE;
-  LIGGGHTS::PairStyles::Factory::instance().addStyle("gran", static_cast<int>(hash), &create_pair<CModel>);
-  LIGGGHTS::Walls::Factory::instance().addStyle("gran", static_cast<int>(hash), &create_wall<CModel>);
-  note_compiled(hash);
+  if constexpr (combos::tdem_contact_model(N, S)) {
+    add<LIGGGHTS::ContactModels::TdemContactModel<Style, false>>();
+    add<LIGGGHTS::ContactModels::TdemContactModel<Style, true>>();  // grid_correction on
+  } else {
+    add<LIGGGHTS::ContactModels::ContactModel<Style>>();
+  }
 }
 
 // Part k of the list of combinations (combos.h), k < TDEM_LIGGGHTS_PARTS: one generated

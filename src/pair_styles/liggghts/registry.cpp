@@ -113,7 +113,17 @@ std::string describe(int64_t hash) {
   auto part = [&](int shift) { return static_cast<int>((hash >> shift) & 63); };
   return "model " + name_of(n.normal, part(0)) + " tangential " + name_of(n.tangential, part(6)) +
          " cohesion " + name_of(n.cohesion, part(12)) + " rolling_friction " +
-         name_of(n.rolling, part(18)) + " surface " + name_of(n.surface, part(24));
+         name_of(n.rolling, part(18)) + " surface " + name_of(n.surface, part(24)) +
+         ((hash & kGridCorrectionBit) ? " grid_correction on" : "");
+}
+
+// `grid_correction on` among the arguments after the models: the variant with the correction
+// compiled in (tdem_liggghts_grid.h). The keyword and its value are left for the settings, which
+// check the value.
+bool grid_correction_on(int narg, char** args) {
+  for (int k = 0; k + 1 < narg && args[k] && args[k + 1]; ++k)
+    if (std::strcmp(args[k], "grid_correction") == 0 && std::strcmp(args[k + 1], "on") == 0) return true;
+  return false;
 }
 
 // Does LIGGGHTS's own selector accept this probe? (It never modifies its tables.)
@@ -165,7 +175,7 @@ void diagnose(int narg, char** args, const LAMMPS_NS::Custom_contact_models& ccm
 int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models ccm) {
   const int narg0 = narg;
   char** const args0 = args;
-  const int64_t hash = Factory::select(narg, args, ccm);
+  int64_t hash = Factory::select(narg, args, ccm);
   if (!g_lmp) return hash;
   if (hash == -1) {
     diagnose(narg0, args0, ccm);
@@ -173,6 +183,12 @@ int64_t select_variant(int& narg, char**& args, LAMMPS_NS::Custom_contact_models
   }
   const int normal = static_cast<int>(hash & 63), tangential = static_cast<int>((hash >> 6) & 63);
   const int rolling = static_cast<int>((hash >> 18) & 63), surface = static_cast<int>((hash >> 24) & 63);
+  if (grid_correction_on(narg, args)) {
+    if (!combos::tdem_contact_model(normal, surface))
+      fail("grid_correction on: the time-grid correction works with the tdem normal models and the default "
+           "surface only (given: " + describe(hash) + ")");
+    hash |= kGridCorrectionBit;
+  }
   // a tdem model in any slot (tdem ids are TDEM_FIRST_ID and up, stock ids below)
   if ((normal >= TDEM_FIRST_ID || tangential >= TDEM_FIRST_ID || surface >= TDEM_FIRST_ID ||
        rolling >= TDEM_FIRST_ID) &&

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "contact_interface.h"
+#include "contact/kinematics.h"
 
 namespace tdem {
 namespace liggghts {
@@ -39,6 +40,28 @@ inline void apply_normal_force(const LIGGGHTS::ContactModels::SurfacesIntersectD
     j_forces.delta_F[1] += -i_forces.delta_F[1];
     j_forces.delta_F[2] += -i_forces.delta_F[2];
   }
+}
+
+// The two entry points of a tdem normal model's evaluate<Result>(sidata, out) (the law on the
+// contact data, its result published to sidata for the tangential law and, if Result, written to
+// *out; always inlined into its caller):
+//  - intersect: LIGGGHTS's surfacesIntersect, the law and its force applied. The model declares
+//    its surfacesIntersect [[gnu::flatten]], so that the law's kernel is inlined there whatever
+//    else calls it (the grid correction's probes call it too, which made GCC keep tdem::hertz::force
+//    out of line: +1.8 % pair-loop instructions);
+//  - law_result: the result (the grid correction's probe, tdem_liggghts_grid.h).
+template <class Model>
+[[gnu::always_inline]] inline void intersect(Model& m, LIGGGHTS::ContactModels::SurfacesIntersectData& sidata,
+                                             LIGGGHTS::ContactModels::ForceData& i_forces,
+                                             LIGGGHTS::ContactModels::ForceData& j_forces) {
+  m.template evaluate<false>(sidata, nullptr);
+  apply_normal_force(sidata, i_forces, j_forces);
+}
+template <class Model>
+tdem::NormalResult<double> law_result(Model& m, LIGGGHTS::ContactModels::SurfacesIntersectData& sidata) {
+  tdem::NormalResult<double> r;
+  m.template evaluate<true>(sidata, &r);
+  return r;
 }
 
 // Publish a normal law's result to the contact data: force, stiffnesses and damping that the

@@ -20,7 +20,8 @@
 //    dt = tau); the tangential kick follows the normal one while sliding, else it is linear from
 //    the law at the touch. Otherwise the contact is evaluated as without the correction.
 //  - end: the first step without contact (surfacesClose; the contact distance is raised to
-//    kContactDistance so that LIGGGHTS calls it for a pair that has just separated), or for a
+//    kContactDistance so that LIGGGHTS calls it for a pair that has just separated; an end beyond
+//    it is foreseen at the last contact step and warned about once), or for a
 //    law that ends at zero force the step where its force is clipped to zero. The last contact
 //    step is reconstructed from the history at xi - h xi' (grid::previous_overlap) and the end's
 //    extra impulse applied, normal and tangential (with torques).
@@ -29,6 +30,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 #include "contact_models.h"
@@ -46,9 +48,11 @@ namespace LIGGGHTS {
 namespace ContactModels {
 
 namespace tdem_grid {
-// Contact distance / (r_i + r_j) with the correction on: an end is corrected when the gap at the
-// first step apart is at most 5 % of the radius sum (of the wall sphere's radius for walls).
-inline constexpr double kContactDistance = 1.05;
+// Contact distance / (r_i + r_j) registered with the correction on (as LIGGGHTS's own models do
+// for their energy accounting): an end is corrected when the gap at the first step apart is at
+// most 1 % of the radius sum (of the sphere's radius for walls), or what neigh_modify
+// contact_distance_factor gives. A larger factor lengthens the neighbour lists of every step.
+inline constexpr double kContactDistance = 1.01;
 inline constexpr int kMaxHistory = 64;
 
 // The tangential (and rolling) models read update->dt: a start runs them with the time since the
@@ -91,7 +95,10 @@ struct Kick {
 };
 }  // namespace tdem_grid
 
-template <typename Style>
+// GC: the correction is compiled in (the variant `grid_correction on` selects, its hash with
+// kGridCorrectionBit); without it the model is LIGGGHTS's sequence only and accepts
+// `grid_correction off`.
+template <typename Style, bool GC>
 class TdemContactModel : public ContactModelBase {
   static_assert(Style::COHESION == COHESION_OFF, "tdem's contact model has no cohesion");
   using Kick = tdem_grid::Kick;
@@ -103,7 +110,7 @@ class TdemContactModel : public ContactModelBase {
   RollingModel<Style::ROLLING> rollingModel;
 
  public:
-  static const int64_t STYLE_HASHCODE = Style::HASHCODE;
+  static const int64_t STYLE_HASHCODE = Style::HASHCODE | (GC ? tdem::liggghts::kGridCorrectionBit : 0);
 
   TdemContactModel(LAMMPS* lmp, IContactHistorySetup* hsetup, bool is_wall, const int64_t)
       : ContactModelBase(lmp, is_wall),
@@ -122,7 +129,8 @@ class TdemContactModel : public ContactModelBase {
     cohesionModel.registerSettings(settings);
     tangentialModel.registerSettings(settings);
     rollingModel.registerSettings(settings);
-    tdem::liggghts::register_on_off(host_, settings, "pair gran / fix wall/gran", "grid_correction", gc_, false);
+    // (the value chose the variant: tdem::liggghts::select_variant)
+    tdem::liggghts::register_on_off(host_, settings, "gran contact model", "grid_correction", setting_, false);
   }
 
   void postSettings(IContactHistorySetup* hsetup) {
@@ -131,7 +139,8 @@ class TdemContactModel : public ContactModelBase {
     cohesionModel.postSettings(hsetup, this);
     tangentialModel.postSettings(hsetup, this);
     rollingModel.postSettings(hsetup, this);
-    if (gc_) {  // the last values of the contact's history
+    if (setting_ != GC) host_->error->all(FLERR, "grid_correction: internal error (variant and setting differ)");
+    if constexpr (GC) {  // the last values of the contact's history
       state_ = hsetup->add_history_value("tdem_gc_state", "0");
       meff_ = hsetup->add_history_value("tdem_gc_meff", "0");
       hsize_ = meff_ + 1;
@@ -147,7 +156,14 @@ class TdemContactModel : public ContactModelBase {
     cohesionModel.connectToProperties(registry);
     tangentialModel.connectToProperties(registry);
     rollingModel.connectToProperties(registry);
-    if (gc_ && Style::TANGENTIAL != TANGENTIAL_OFF) {  // mu, to tell sliding from sticking
+    if constexpr (GC) {
+      watch_clip_ = normalModel.contact_end() == tdem::ContactEnd::zero_force;
+      // the flags whose step is plain: seen (not corrected), ended, and on unless the clip is watched
+      plain_flags_ = (1u << static_cast<int>(tdem::grid::kFlagSeen)) | (1u << static_cast<int>(tdem::grid::kFlagEnded)) |
+                     (watch_clip_ ? 0u : 1u << static_cast<int>(tdem::grid::kFlagOn));
+      gap_ = host_->neighbor->contactDistanceFactor - 1.0;
+    }
+    if constexpr (GC && Style::TANGENTIAL != TANGENTIAL_OFF) {  // mu, to tell sliding from sticking
       registry.registerProperty("coeffFrict", &MODEL_PARAMS::createCoeffFrict);
       registry.connect("coeffFrict", mu_, "grid_correction");
     }
@@ -173,18 +189,32 @@ class TdemContactModel : public ContactModelBase {
   void tally_pw(double val, int i, int j, int index) { surfaceModel.tally_pw(val, i, j, index); }
   bool checkSurfaceIntersect(SurfacesIntersectData& sidata) { return surfaceModel.checkSurfaceIntersect(sidata); }
 
-  inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
-    if (__builtin_expect(gc_, 0) && sidata.contact_history && sidata.computeflag && sidata.shearupdate) {
-      double& state = sidata.contact_history[state_];
-      const double base = 8.0 * static_cast<double>(host_->update->ntimestep);
-      const double flags = state - base;  // in [0, 8) if the pair was evaluated at the last step
-      const bool watched = flags == tdem::grid::kFlagOn && normalModel.contact_end() == tdem::ContactEnd::zero_force;
-      if (!(flags == tdem::grid::kFlagOn || flags == tdem::grid::kFlagSeen || flags == tdem::grid::kFlagEnded) ||
-          watched)
-        return event(sidata, i_forces, j_forces, flags);
-      state = base + 8.0 + flags;
+  // With the correction on (and the history updated) a touching contact is an event (event(): its
+  // first step, flags 0 or a stale stamp; a corrected contact of a zero-force law, whose clip is
+  // watched), or it runs the plain models and its state takes the new stamp. The test is all that
+  // stays in the loop.
+  // (always inlined into the pair loop, as LIGGGHTS's ContactModel is, with one call site of the
+  // models: an out-of-line copy cost 60 instructions per contact-step)
+  [[gnu::always_inline]] inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces,
+                                                       ForceData& j_forces) {
+    [[maybe_unused]] bool on = false;
+    if constexpr (GC) {
+      if (sidata.contact_history && sidata.computeflag && sidata.shearupdate) {
+        double& state = sidata.contact_history[state_];
+        const double flags = state - 8.0 * static_cast<double>(host_->update->ntimestep);
+        // flags of the last step (0 ... 7; a stale stamp gives a negative value, a huge index)
+        const unsigned k = static_cast<unsigned>(static_cast<long>(flags));
+        if (k >= 8u || !((plain_flags_ >> k) & 1u)) return event(sidata, i_forces, j_forces, flags);
+        on = k == static_cast<unsigned>(tdem::grid::kFlagOn);
+        state += 8.0;
+      }
     }
     plain(sidata, i_forces, j_forces);
+    // a corrected contact whose gap after the next step would be beyond the contact distance: its
+    // end will not be shown to the model
+    if constexpr (GC)
+      if (__builtin_expect(on, 0) && sidata.deltan - host_->update->dt * sidata.vn < -gap_ * sidata.radsum)
+        end_unseen();
   }
 
   void endSurfacesIntersect(SurfacesIntersectData& sidata, TriMesh* mesh, ForceData& i_forces, ForceData& j_forces) {
@@ -192,12 +222,14 @@ class TdemContactModel : public ContactModelBase {
     cohesionModel.endSurfacesIntersect(sidata, i_forces, j_forces);
   }
 
-  inline void surfacesClose(SurfacesCloseData& scdata, ForceData& i_forces, ForceData& j_forces) {
-    if (__builtin_expect(gc_, 0) && scdata.contact_history && scdata.computeflag && scdata.shearupdate) {
-      double& state = scdata.contact_history[state_];
-      if (state - 8.0 * static_cast<double>(host_->update->ntimestep) == tdem::grid::kFlagOn)
+  // (the state is not reset: from the next step on its stamp says "not evaluated at the last step")
+  [[gnu::always_inline]] inline void surfacesClose(SurfacesCloseData& scdata, ForceData& i_forces,
+                                                   ForceData& j_forces) {
+    if constexpr (GC) {
+      if (scdata.contact_history && scdata.computeflag && scdata.shearupdate &&
+          scdata.contact_history[state_] - 8.0 * static_cast<double>(host_->update->ntimestep) ==
+              tdem::grid::kFlagOn)
         separation(static_cast<SurfacesIntersectData&>(scdata), i_forces, j_forces);
-      state = 0.0;
     }
     surfaceModel.surfacesClose(scdata, i_forces, j_forces);
     normalModel.surfacesClose(scdata, i_forces, j_forces);
@@ -227,6 +259,18 @@ class TdemContactModel : public ContactModelBase {
     cohesionModel.surfacesIntersect(sidata, i_forces, j_forces);
     tangentialModel.surfacesIntersect(sidata, i_forces, j_forces);
     rollingModel.surfacesIntersect(sidata, i_forces, j_forces);
+  }
+
+  [[gnu::cold, gnu::noinline]] void end_unseen() {
+    if (warned_) return;
+    warned_ = true;
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "grid_correction: a contact is about to end with a gap beyond the contact distance (factor %g), "
+                  "where LIGGGHTS does not show it: its end is not corrected; raise it with neigh_modify "
+                  "contact_distance_factor (printed once per rank)",
+                  1.0 + gap_);
+    host_->error->warning(FLERR, buf);
   }
 
   double friction(const SurfacesCloseData& d) const { return mu_ ? mu_[d.itype][d.jtype] : 0.0; }
@@ -407,7 +451,11 @@ class TdemContactModel : public ContactModelBase {
   }
 
   LAMMPS_NS::LAMMPS* host_;
-  bool gc_ = false;
+  bool setting_ = false;     // the keyword's value (checked against GC)
+  bool watch_clip_ = false;  // the law ends at zero force: its corrected contacts are watched
+  unsigned plain_flags_ = 0;  // bit f: a contact with flags f at the last step runs the plain models
+  bool warned_ = false;
+  double gap_ = 0.0;         // the contact distance factor - 1
   int state_ = 0, meff_ = 0, hsize_ = 0;
   double** mu_ = nullptr;
 };

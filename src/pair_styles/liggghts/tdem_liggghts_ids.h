@@ -8,6 +8,8 @@
 // the hash (and with it a restart file) of a tdem model is stable as long as these stay put.
 #pragma once
 
+#include <cstdint>
+
 // The normal laws that are units (src/contact/law_unit.h, listed in src/contact/laws.h), one line
 // each: X(constant, model id, namespace of the law). The model is `model tdem/<name>` with the
 // name of the law's description; normal_model_tdem_history.h defines it from the unit.
@@ -62,5 +64,8 @@ inline constexpr const char* kTangentialMindlinNoSlipName = "tdem/mindlin_no_sli
 inline constexpr const char* kTangentialDiRenzoName = "tdem/di_renzo";
 inline constexpr const char* kSurfaceClumpName = "tdem/clump";
 inline constexpr const char* kRollingSdsName = "tdem/sds";
+// The hash bit of a combination's variant with `grid_correction on` (tdem_liggghts_grid.h; bits
+// 0-29 hold the five model ids, 6 bits each); the selector (registry.cpp) sets it.
+inline constexpr int64_t kGridCorrectionBit = int64_t(1) << 30;
 }  // namespace liggghts
 }  // namespace tdem

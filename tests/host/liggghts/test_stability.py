@@ -44,7 +44,7 @@ if args.grid_correction == "on":
     def _with_gc(line):
         w = line.split()
         tdem_model = any(w[k] == "model" and w[k + 1].startswith("tdem/") for k in range(len(w) - 1))
-        clump = "tdem/clump" in w
+        clump = "tdem/clump" in w or "tdem/continuous_potential" in w  # (no correction there)
         if tdem_model and not clump and ((w[:2] == ["pair_style", "gran"]) or "wall/gran" in w):
             return line + " grid_correction on"
         return line
