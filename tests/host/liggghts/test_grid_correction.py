@@ -10,7 +10,8 @@ harness   A sphere hits the floor (wall/gran primitive zplane) from a gap with t
           on the single-collision harness), for tdem/lsd (both ends), tdem/hertz damping tsuji,
           tdem/walton_braun and tdem/lsd + tdem/cundall_strack at 25 degrees; velocity_verlet and
           velocity_verlet_ab2; 4 phases of the touch each, at 25.37 steps per contact. Two spheres
-          head-on (pair gran, equal masses) equal the harness with m* and the closing speed. With
+          head-on (pair gran, equal masses) equal the harness with m* and the closing speed, and a
+          mesh floor (wall/gran mesh) gives the primitive wall's oblique impacts bitwise. With
           velocity_verlet_ab2 the lsd |de| against the closed form, mean of the phases, is <= 1e-3
           with the correction and > 3e-3 without it (first order: the control).
 unchanged Columns at rest (9 columns of 4 spheres at their static overlaps on the floor, gravity,
@@ -168,6 +169,34 @@ def part_harness(args, checks):
                                                                                         " CONTACT NOT OVER"))
             if angle == 0.0 and name.startswith("lsd") and scheme == "velocity_verlet_ab2":
                 errs.setdefault(name, []).append(abs(e_host - base["closed_form"]["e"]))
+    # the same oblique impacts on a mesh floor (fix mesh/surface, two triangles at z = 0): the
+    # mesh wall's contact history and surfacesClose give the primitive wall's result bitwise
+    name, model, props, hopts, angle = CASES[-1]
+    base = collide(args, checks, hopts + body)
+    if base is not None:
+        dt = float("%.6g" % (base["contact_time"] / SPC))
+        th = math.radians(angle)
+        vn, vt = V0 * math.cos(th), V0 * math.sin(th)
+        impacts = [("velocity_verlet_ab2", (3 + (k + 0.5) / PHASES) * vn * dt, vn, vt) for k in range(PHASES)]
+        nsteps = int(4 + 1.6 * SPC + 40)
+        finals = {}
+        for kind in ("primitive", "mesh"):
+            text = wall_impacts(model, props, dt, impacts, nsteps)
+            if kind == "mesh":
+                text = text.replace(wall_line("wz", model, "zplane 0.0"),
+                                    "fix cad all mesh/surface file floor.stl type 1\n" +
+                                    wall_line("wz", model, "X").replace("primitive type 1 X", "mesh n_meshes 1 meshes cad"))
+            d = T.workdir(args, "tdem_lig_gc_floor_" + kind)
+            with open(os.path.join(d, "floor.stl"), "w") as f:
+                f.write("solid floor\n" + "".join(
+                    "facet normal 0 0 1\nouter loop\n%sendloop\nendfacet\n" % "".join("vertex %r %r 0\n" % p for p in tri)
+                    for tri in (((-0.005, -0.015), (0.115, -0.015), (0.115, 0.015)),
+                                ((-0.005, -0.015), (0.115, 0.015), (-0.005, 0.015)))) + "endsolid floor\n")
+            T.run(args.tdem, text, d, "h")
+            finals[kind] = T.read_dump(os.path.join(d, "dump.h"))[-1][2]
+        a, b = finals["primitive"], finals["mesh"]
+        checks.check(a.shape == b.shape and np.array_equal(a, b), "%s, velocity_verlet_ab2, 4 phases: mesh floor = "
+                     "primitive zplane bitwise (e %.12f ... %.12f)" % (name, b[0, 3] / vn, b[-1, 3] / vn))
     for name, v in errs.items():
         checks.check(np.mean(v) <= 1e-3, "%s, velocity_verlet_ab2 with the correction: mean |de| over the phases "
                      "%.2e <= 1e-3 (%.2f steps per contact)" % (name, np.mean(v), SPC))
