@@ -23,23 +23,33 @@ inline void clear_history_of_new_contact(double& stamp, double* hist, int n, dou
   if (update) stamp = now;
 }
 
+// Adds the normal force fn along the normal to the two partners (a wall: times the element's area
+// ratio, to i only). Written out as the stock models do it (a loop with the wall test
+// inside cost 0.9-1.3 % pair-loop instructions); with the partners' forces still zero, as when a
+// normal model applies its force, it is their arithmetic exactly.
+inline void add_normal_force(const LIGGGHTS::ContactModels::SurfacesIntersectData& sidata, double fn,
+                             LIGGGHTS::ContactModels::ForceData& i_forces,
+                             LIGGGHTS::ContactModels::ForceData& j_forces) {
+  if (sidata.is_wall) {
+    const double fw = fn * sidata.area_ratio;
+    i_forces.delta_F[0] += fw * sidata.en[0];
+    i_forces.delta_F[1] += fw * sidata.en[1];
+    i_forces.delta_F[2] += fw * sidata.en[2];
+  } else {
+    const double f0 = fn * sidata.en[0], f1 = fn * sidata.en[1], f2 = fn * sidata.en[2];
+    i_forces.delta_F[0] += f0;
+    i_forces.delta_F[1] += f1;
+    i_forces.delta_F[2] += f2;
+    j_forces.delta_F[0] -= f0;
+    j_forces.delta_F[1] -= f1;
+    j_forces.delta_F[2] -= f2;
+  }
+}
+
 inline void apply_normal_force(const LIGGGHTS::ContactModels::SurfacesIntersectData& sidata,
                                LIGGGHTS::ContactModels::ForceData& i_forces,
                                LIGGGHTS::ContactModels::ForceData& j_forces) {
-  const double Fn = sidata.Fn;
-  if (sidata.is_wall) {
-    const double Fn_ = Fn * sidata.area_ratio;
-    i_forces.delta_F[0] += Fn_ * sidata.en[0];
-    i_forces.delta_F[1] += Fn_ * sidata.en[1];
-    i_forces.delta_F[2] += Fn_ * sidata.en[2];
-  } else {
-    i_forces.delta_F[0] += Fn * sidata.en[0];
-    i_forces.delta_F[1] += Fn * sidata.en[1];
-    i_forces.delta_F[2] += Fn * sidata.en[2];
-    j_forces.delta_F[0] += -i_forces.delta_F[0];
-    j_forces.delta_F[1] += -i_forces.delta_F[1];
-    j_forces.delta_F[2] += -i_forces.delta_F[2];
-  }
+  add_normal_force(sidata, sidata.Fn, i_forces, j_forces);
 }
 
 // The two entry points of a tdem normal model's evaluate<Result>(sidata, out) (the law on the

@@ -297,7 +297,7 @@ class TdemContactModel : public ContactModelBase {
   // law, else from a probe at xi/2 on `hist`.
   void exponents(const SurfacesIntersectData& data, double xi, double* hist, const tdem::NormalResult<double>& r,
                  double& p, double& q) {
-    if (NormalModel<Style::MODEL>::linear) {
+    if constexpr (NormalModel<Style::MODEL>::linear) {
       p = 1.0, q = 0.0;
       return;
     }
@@ -308,14 +308,6 @@ class TdemContactModel : public ContactModelBase {
     p = tdem::grid::power_exponent(r.elastic, hf.elastic, 1.0);
     q = tdem::grid::power_exponent(r.force - r.elastic, hf.force - hf.elastic, 0.0);
   }
-  static void add_normal(const SurfacesIntersectData& d, double fn, ForceData& i_forces, ForceData& j_forces) {
-    const double f = d.is_wall ? fn * d.area_ratio : fn;
-    for (int c = 0; c < 3; ++c) {
-      i_forces.delta_F[c] += f * d.en[c];
-      if (!d.is_wall) j_forces.delta_F[c] -= f * d.en[c];
-    }
-  }
-
   // A step of a contact that needs more than the plain models: its first step (flags 0), or a
   // corrected contact of a zero-force law, whose clip is watched.
   [[gnu::cold, gnu::noinline]] void event(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces,
@@ -347,7 +339,7 @@ class TdemContactModel : public ContactModelBase {
     }
     const double fn = nr.force;
     const double fn_apply = tdem::grid::start_force(nr.elastic, pe, fn - nr.elastic, pq, tau, h);
-    add_normal(sidata, fn_apply, i_forces, j_forces);
+    tdem::liggghts::add_normal_force(sidata, fn_apply, i_forces, j_forces);
     Kick t;
     if (tdem::grid::sliding(a.force_squared(), friction(sidata), fn)) {
       t = Kick::combine(a, a, [&](double x, double) { return x / fn * fn_apply; });
@@ -393,7 +385,7 @@ class TdemContactModel : public ContactModelBase {
     const double s = nr.elastic != 0.0 || nr.damping != 0.0 ? tdem::grid::end_time(fp, nr.elastic + nr.damping * rate, h)
                                                             : tdem::grid::end_time(fp, fp + np.stiffness * rate * h, h);
     const double fn_x = tdem::grid::end_extra(fp, fp, 1.0, 0.0, 0.0, s, h);
-    add_normal(now, fn_x, i_forces, j_forces);
+    tdem::liggghts::add_normal_force(now, fn_x, i_forces, j_forces);
     end_tangential(p, 0.0, fp, fn_x, s, h, tdem::grid::sliding(p.force_squared(), friction(now), fp))
         .add_to(i_forces, j_forces);
   }
@@ -445,7 +437,7 @@ class TdemContactModel : public ContactModelBase {
       const double p2 = p.force_squared(), e2 = tangential_at(probe).force_squared();
       if (e2 < p2) cap = std::sqrt(e2 / p2);
     }
-    add_normal(k, fn_x, i_forces, j_forces);
+    tdem::liggghts::add_normal_force(k, fn_x, i_forces, j_forces);
     end_tangential(p, cap, fp, fn_x, s, h, slide).add_to(i_forces, j_forces);
     sidata.has_force_update = true;
   }
