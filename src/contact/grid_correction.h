@@ -95,15 +95,25 @@ inline bool resolved(T elastic, T p, T damping, T xi, T xi_dot, T meff, T h) noe
 // Kuwabara-Kono (q = 1/2) or Tsuji (q = 1/4) damping along a straight approach: a linear model
 // in time cannot follow xi^(1/4) near the touch and does worse than no correction at all there.
 // Returns int_0^length F(t') dt'.
-// r^x with the exponents of the common laws without pow (0, 1/2, 1, 3/2, 2).
+// r^x (r > 0) without pow for a multiple of 1/4 in [-4, 4]: the exponents of the common laws
+// (Hertz 3/2, Tsuji's 1/4, Kuwabara-Kono's 1/2) and those of their near-window sums (x + 1, x + 2,
+// x - 3); a start or an end of a Hertz + Tsuji contact takes about 30 powers. Whole r factors times
+// sqrt(sqrt(r)), sqrt(r) or both (so 1, r, r r, sqrt(r) and r sqrt(r) are those expressions
+// exactly).
 template <class T>
 TDEM_KERNEL T power(T r, T x) noexcept {
-  if (x == T(0)) return T(1);
-  if (x == T(1)) return r;
-  if (x == T(2)) return r * r;
-  if (x == T(0.5)) return std::sqrt(r);
-  if (x == T(1.5)) return r * std::sqrt(r);
-  return std::pow(r, x);
+  const T x4 = T(4) * x;
+  if (!(x4 == std::floor(x4) && std::fabs(x) <= T(4))) return std::pow(r, x);
+  const int n = static_cast<int>(std::fabs(x4));
+  T result = T(1);
+  for (int k = 0; k < n / 4; ++k) result *= r;
+  if (n % 4 == 2) {
+    result *= std::sqrt(r);
+  } else if (n % 4 != 0) {
+    const T s = std::sqrt(r), q = std::sqrt(s);
+    result *= n % 4 == 1 ? q : s * q;
+  }
+  return x < T(0) ? T(1) / result : result;
 }
 
 template <class T>
@@ -115,15 +125,16 @@ TDEM_KERNEL T power_impulse(T e, T p, T d, T q, T t_ref, T length) noexcept {
 
 // The exponent x of a part that scales as xi^x, from its values at xi and at xi / 2 (a law
 // evaluated twice at an event); `fallback` where the part is zero or changes sign. Clipped to
-// [0, 4]; within 1e-9 of a whole number, that number.
+// [0, 4]; within 1e-9 of a multiple of 1/4, that multiple (the exponents of the common laws, which
+// power() then takes without pow).
 template <class T>
 TDEM_KERNEL T power_exponent(T f, T f_half, T fallback) noexcept {
   if (!(f * f_half > T(0))) return fallback;
   if (f == T(2) * f_half) return T(1);  // the linear law: exact in binary, no log
   if (f == f_half) return T(0);
   T x = std::log2(f / f_half);
-  const T whole = std::round(x);
-  if (std::fabs(x - whole) < T(1e-9)) x = whole;  // 1 and 0 exactly for the linear law
+  const T quarter = std::round(T(4) * x) / T(4);
+  if (std::fabs(x - quarter) < T(1e-9)) x = quarter;  // 1 and 0 exactly for the linear law
   return x < T(0) ? T(0) : (x > T(4) ? T(4) : x);
 }
 
@@ -155,19 +166,19 @@ template <class T>
 TDEM_KERNEL T near_windows(T c, T x, T t_ref, T u0, T h) noexcept {
   if (!(x > T(0) && x < T(1)) || c == T(0)) return T(0);
   const T floor = T(1e-12) * h;
-  const T scale = c * std::pow(h / (t_ref > floor ? t_ref : floor), x);
+  const T scale = c * power(h / (t_ref > floor ? t_ref : floor), x);
   T sum = T(0);
   for (int k = 1; k <= kNearWindows; ++k) {
     const T u = u0 + T(k);
-    sum += std::pow(u, x) - (std::pow(u + T(0.5), x + T(1)) - std::pow(u - T(0.5), x + T(1))) / (x + T(1));
+    sum += power(u, x) - (power(u + T(0.5), x + T(1)) - power(u - T(0.5), x + T(1))) / (x + T(1));
   }
   // beyond: the sum is the integral of D from v = u0 + K + 1/2, which has the closed form
   // ((v + 1/2)^(x+2) - (v - 1/2)^(x+2)) / ((x+1)(x+2)) - v^(x+1) / (x+1), plus the midpoint-rule
   // term D'(v)/24, D'(v) ~ x (1 - x)(x - 2) v^(x-3) / 24 (Euler-Maclaurin; then good to ~1e-5 of
   // the sum)
   const T v = u0 + T(kNearWindows) + T(0.5);
-  sum += (std::pow(v + T(0.5), x + T(2)) - std::pow(v - T(0.5), x + T(2))) / ((x + T(1)) * (x + T(2))) -
-         std::pow(v, x + T(1)) / (x + T(1)) + x * (T(1) - x) * (x - T(2)) * std::pow(v, x - T(3)) / T(576);
+  sum += (power(v + T(0.5), x + T(2)) - power(v - T(0.5), x + T(2))) / ((x + T(1)) * (x + T(2))) -
+         power(v, x + T(1)) / (x + T(1)) + x * (T(1) - x) * (x - T(2)) * power(v, x - T(3)) / T(576);
   return -scale * sum;  // the extra force: minus the sampling excess of those windows
 }
 

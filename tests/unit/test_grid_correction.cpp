@@ -60,8 +60,15 @@ TEST(GridCorrection, PowerImpulseAgainstQuadrature) {
 TEST(GridCorrection, PowerExponent) {
   EXPECT_EQ(grid::power_exponent(2.0, 1.0, 7.0), 1.0);
   EXPECT_EQ(grid::power_exponent(3.0 * 1e-3, 3.0 * 0.5e-3, 7.0), 1.0);  // snapped
-  EXPECT_NEAR(grid::power_exponent(std::pow(0.2, 1.5), std::pow(0.1, 1.5), 7.0), 1.5, 1e-14);
-  EXPECT_NEAR(grid::power_exponent(-std::pow(0.2, 0.25), -std::pow(0.1, 0.25), 7.0), 0.25, 1e-14);
+  EXPECT_EQ(grid::power_exponent(std::pow(0.2, 1.5), std::pow(0.1, 1.5), 7.0), 1.5);  // snapped to 1/4s
+  EXPECT_EQ(grid::power_exponent(-std::pow(0.2, 0.25), -std::pow(0.1, 0.25), 7.0), 0.25);
+  EXPECT_NEAR(grid::power_exponent(std::pow(0.2, 1.3), std::pow(0.1, 1.3), 7.0), 1.3, 1e-14);  // not snapped
+  EXPECT_EQ(grid::power(16.0, 0.25), 2.0);
+  for (double x = -4.0; x <= 4.0; x += 0.25)  // the quarter multiples without pow
+    for (double r : {1e-6, 0.3, 0.7, 1.0, 2.5, 40.0})
+      EXPECT_NEAR(grid::power(r, x), std::pow(r, x), 4e-16 * std::pow(r, x)) << r << "^" << x;
+  EXPECT_EQ(grid::power(0.3, 1.5), 0.3 * std::sqrt(0.3));
+  EXPECT_EQ(grid::power(0.3, 1.3), std::pow(0.3, 1.3));
   EXPECT_EQ(grid::power_exponent(0.0, 0.0, 7.0), 7.0);
   EXPECT_EQ(grid::power_exponent(1.0, -1.0, 7.0), 7.0);
 }
