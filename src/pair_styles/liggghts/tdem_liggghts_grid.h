@@ -9,22 +9,24 @@
 // TdemContactModel<Style> has the interface of LIGGGHTS's ContactModel<Style> (which keeps its
 // five models private) and calls the five models in the same order. With the correction off
 // that is all it does: results are bitwise those of ContactModel<Style>. With it on it keeps two
-// history values after the models' own: the contact's state, (step + 1) * 8 + flags (the flags of
-// grid_correction.h; the step stamp makes the flags of a pair that was not evaluated at the last
-// step count as 0: LIGGGHTS keeps a separated pair's history until the next neighbour rebuild),
-// and m* (the end step has no effective mass in LIGGGHTS's data for a separated pair).
-//  - start: the first contact step of a pair (flags 0). If the touch tau = xi / xi' lies within
-//    the last step and the contact is resolved (grid::resolved), the normal kick is the power
-//    model's (grid::start_force; its exponents from the law at xi/2, except for the linear law)
-//    and the tangential spring starts at the touch (the tangential and rolling models run with
+// history values after the models' own: the contact's state, (step + 1) * 8 + a code (tdem_grid::
+// below; the step stamp makes a pair that was not evaluated at the last step count as new:
+// LIGGGHTS keeps a separated pair's history until the next neighbour rebuild), and m* (the end step
+// has no effective mass in LIGGGHTS's data for a separated pair). In the loop a contact step costs
+// one comparison of the state and its new stamp.
+//  - start: the first contact step of a pair (code 0 or a stale stamp). If the touch tau = xi / xi'
+//    lies within the last step and the contact is resolved (grid::resolved), the normal kick is the
+//    power model's (grid::start_force; its exponents from the law at xi/2, except for the linear
+//    law) and the tangential spring starts at the touch (the tangential and rolling models run with
 //    dt = tau); the tangential kick follows the normal one while sliding, else it is linear from
 //    the law at the touch. Otherwise the contact is evaluated as without the correction.
 //  - end: the first step without contact (surfacesClose; the contact distance is raised to
-//    kContactDistance so that LIGGGHTS calls it for a pair that has just separated; an end beyond
-//    it is foreseen at the last contact step and warned about once), or for a
+//    kContactDistance so that LIGGGHTS calls it for a pair that has just separated), or for a
 //    law that ends at zero force the step where its force is clipped to zero. The last contact
 //    step is reconstructed from the history at xi - h xi' (grid::previous_overlap) and the end's
-//    extra impulse applied, normal and tangential (with torques).
+//    extra impulse applied, normal and tangential (with torques). A contact whose approach speed
+//    times the step exceeds the contact distance (a fast one) is watched at every step: an end whose
+//    gap after one step lies beyond the contact distance is foreseen and warned about once.
 // The same rules as LAMMPS's pair tdem/gran (src/pair_styles/lammps/grid_host.h) and the
 // single-collision harness (tdem-collide --grid-correction on).
 #pragma once
@@ -54,6 +56,13 @@ namespace tdem_grid {
 // contact_distance_factor gives. A larger factor lengthens the neighbour lists of every step.
 inline constexpr double kContactDistance = 1.01;
 inline constexpr int kMaxHistory = 64;
+// The contact's state: 8 * (the step of its last evaluation + 1) + a code. The codes of the flags
+// of grid_correction.h (on 1, ended 2, seen 4) run the plain models; the codes below 1 are events:
+// 0 (new), negative (a stale stamp: not evaluated at the last step), and two more states of a
+// corrected contact whose end is watched at every step, so that one comparison decides in the loop.
+// A corrected contact that has not ended has a code in (0, 1].
+inline constexpr double kFast = 0.25;    // its approach speed times the step exceeds the contact distance
+inline constexpr double kWatched = 0.5;  // of a zero-force law: its clip is watched
 
 // The tangential (and rolling) models read update->dt: a start runs them with the time since the
 // touch.
@@ -102,6 +111,7 @@ template <typename Style, bool GC>
 class TdemContactModel : public ContactModelBase {
   static_assert(Style::COHESION == COHESION_OFF, "tdem's contact model has no cohesion");
   using Kick = tdem_grid::Kick;
+  static constexpr double kFast = tdem_grid::kFast, kWatched = tdem_grid::kWatched;
 
   SurfaceModel<Style::SURFACE> surfaceModel;
   NormalModel<Style::MODEL> normalModel;
@@ -119,7 +129,9 @@ class TdemContactModel : public ContactModelBase {
         cohesionModel(lmp, hsetup, this),
         tangentialModel(lmp, hsetup, this),
         rollingModel(lmp, hsetup, this),
-        host_(lmp) {}
+        host_(lmp),
+        is_wall_(is_wall),
+        mode_(is_wall ? kWall : kIdle) {}
 
   int64_t hashcode() { return STYLE_HASHCODE; }
 
@@ -158,9 +170,7 @@ class TdemContactModel : public ContactModelBase {
     rollingModel.connectToProperties(registry);
     if constexpr (GC) {
       watch_clip_ = normalModel.contact_end() == tdem::ContactEnd::zero_force;
-      // the flags whose step is plain: seen (not corrected), ended, and on unless the clip is watched
-      plain_flags_ = (1u << static_cast<int>(tdem::grid::kFlagSeen)) | (1u << static_cast<int>(tdem::grid::kFlagEnded)) |
-                     (watch_clip_ ? 0u : 1u << static_cast<int>(tdem::grid::kFlagOn));
+      on_ = watch_clip_ ? kWatched : tdem::grid::kFlagOn;
       gap_ = host_->neighbor->contactDistanceFactor - 1.0;
     }
     if constexpr (GC && Style::TANGENTIAL != TANGENTIAL_OFF) {  // mu, to tell sliding from sticking
@@ -169,7 +179,13 @@ class TdemContactModel : public ContactModelBase {
     }
   }
 
+  // (LIGGGHTS's pair loop calls it before its loop, the wall fixes do not)
   void beginPass(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    if constexpr (GC) {  // the pass's constants
+      if (!is_wall_) mode_ = sidata.computeflag && sidata.shearupdate ? kLivePass : kIdle;
+      stamp_ = 8.0 * static_cast<double>(host_->update->ntimestep);
+      lo_ = stamp_ + tdem::grid::kFlagOn;
+    }
     surfaceModel.beginPass(sidata, i_forces, j_forces);
     normalModel.beginPass(sidata, i_forces, j_forces);
     cohesionModel.beginPass(sidata, i_forces, j_forces);
@@ -189,32 +205,24 @@ class TdemContactModel : public ContactModelBase {
   void tally_pw(double val, int i, int j, int index) { surfaceModel.tally_pw(val, i, j, index); }
   bool checkSurfaceIntersect(SurfacesIntersectData& sidata) { return surfaceModel.checkSurfaceIntersect(sidata); }
 
-  // With the correction on (and the history updated) a touching contact is an event (event(): its
-  // first step, flags 0 or a stale stamp; a corrected contact of a zero-force law, whose clip is
-  // watched), or it runs the plain models and its state takes the new stamp. The test is all that
-  // stays in the loop.
+  // With the correction on (and the history updated) a touching contact whose code is below 1 is an
+  // event (event(): its first step, code 0 or a stale stamp; a corrected contact whose end is
+  // watched: a fast one, or one of a zero-force law); any other runs the plain models and its state
+  // takes the new stamp. That test is all that stays in the loop (the pass's constants: beginPass).
   // (always inlined into the pair loop, as LIGGGHTS's ContactModel is, with one call site of the
   // models: an out-of-line copy cost 60 instructions per contact-step)
   [[gnu::always_inline]] inline void surfacesIntersect(SurfacesIntersectData& sidata, ForceData& i_forces,
                                                        ForceData& j_forces) {
-    [[maybe_unused]] bool on = false;
     if constexpr (GC) {
-      if (sidata.contact_history && sidata.computeflag && sidata.shearupdate) {
+      if (__builtin_expect(mode_ == kLivePass, 1)) {
         double& state = sidata.contact_history[state_];
-        const double flags = state - 8.0 * static_cast<double>(host_->update->ntimestep);
-        // flags of the last step (0 ... 7; a stale stamp gives a negative value, a huge index)
-        const unsigned k = static_cast<unsigned>(static_cast<long>(flags));
-        if (k >= 8u || !((plain_flags_ >> k) & 1u)) return event(sidata, i_forces, j_forces, flags);
-        on = k == static_cast<unsigned>(tdem::grid::kFlagOn);
+        if (__builtin_expect(state < lo_, 0)) return event(sidata, i_forces, j_forces, stamp_);
         state += 8.0;
+      } else if (mode_ == kWall) {
+        return wall_intersect(sidata, i_forces, j_forces);
       }
     }
     plain(sidata, i_forces, j_forces);
-    // a corrected contact whose gap after the next step would be beyond the contact distance: its
-    // end will not be shown to the model
-    if constexpr (GC)
-      if (__builtin_expect(on, 0) && sidata.deltan - host_->update->dt * sidata.vn < -gap_ * sidata.radsum)
-        end_unseen();
   }
 
   void endSurfacesIntersect(SurfacesIntersectData& sidata, TriMesh* mesh, ForceData& i_forces, ForceData& j_forces) {
@@ -222,14 +230,25 @@ class TdemContactModel : public ContactModelBase {
     cohesionModel.endSurfacesIntersect(sidata, i_forces, j_forces);
   }
 
-  // (the state is not reset: from the next step on its stamp says "not evaluated at the last step")
+  // A pair within the contact distance, not touching. With the correction on (and the history
+  // updated), only its first step apart does anything: the end of a corrected contact, and the
+  // models' surfacesClose, which only reset the contact's history and flags. At its later steps
+  // apart (code <= 0: a stale stamp; or 0, a pair that never touched) the models' reset has been
+  // done already (or there is nothing to reset), so it is skipped: the pairs within 1 % of contact
+  // cost one comparison a step. (A pair that left the contact distance within one step and came
+  // back keeps its tangential history, as every pair does without the contact distance in stock
+  // LIGGGHTS.) The state is not reset: from the next step on its stamp says "not evaluated at the
+  // last step".
   [[gnu::always_inline]] inline void surfacesClose(SurfacesCloseData& scdata, ForceData& i_forces,
                                                    ForceData& j_forces) {
     if constexpr (GC) {
-      if (scdata.contact_history && scdata.computeflag && scdata.shearupdate &&
-          scdata.contact_history[state_] - 8.0 * static_cast<double>(host_->update->ntimestep) ==
-              tdem::grid::kFlagOn)
-        separation(static_cast<SurfacesIntersectData&>(scdata), i_forces, j_forces);
+      if (__builtin_expect(mode_ == kLivePass, 1)) {
+        const double state = scdata.contact_history[state_];
+        if (state <= stamp_) return;  // code <= 0
+        if (state <= lo_) separation(static_cast<SurfacesIntersectData&>(scdata), i_forces, j_forces);  // (0, 1]
+      } else if (mode_ == kWall && !wall_close(scdata, i_forces, j_forces)) {
+        return;
+      }
     }
     surfaceModel.surfacesClose(scdata, i_forces, j_forces);
     normalModel.surfacesClose(scdata, i_forces, j_forces);
@@ -273,9 +292,39 @@ class TdemContactModel : public ContactModelBase {
     host_->error->warning(FLERR, buf);
   }
 
+  // A wall fix's contact (no beginPass): whether the history is updated, and the stamp.
+  bool update_now(const SurfacesCloseData& d, double& stamp) const {
+    stamp = 8.0 * static_cast<double>(host_->update->ntimestep);
+    return d.contact_history && d.computeflag && d.shearupdate;
+  }
+  // surfacesIntersect and surfacesClose of a wall fix's contact (out of the pair loop's way).
+  [[gnu::noinline]] void wall_intersect(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+    double stamp;
+    if (update_now(sidata, stamp)) {
+      double& state = sidata.contact_history[state_];
+      if (state < stamp + tdem::grid::kFlagOn) return event(sidata, i_forces, j_forces, stamp);
+      state += 8.0;
+    }
+    plain(sidata, i_forces, j_forces);
+  }
+  // false: skip the models' surfacesClose (a later step apart)
+  [[gnu::noinline]] bool wall_close(SurfacesCloseData& scdata, ForceData& i_forces, ForceData& j_forces) {
+    double stamp;
+    if (!update_now(scdata, stamp)) return true;
+    const double code = scdata.contact_history[state_] - stamp;
+    if (code <= 0.0) return false;
+    if (code <= tdem::grid::kFlagOn) separation(static_cast<SurfacesIntersectData&>(scdata), i_forces, j_forces);
+    return true;
+  }
+  // A fast contact (kFast) whose gap after the next step would be beyond the contact distance:
+  // its end will not be shown to the model.
+  void foresee_end(const SurfacesIntersectData& d) {
+    if (d.deltan - host_->update->dt * d.vn < -gap_ * d.radsum) end_unseen();
+  }
+
   double friction(const SurfacesCloseData& d) const { return mu_ ? mu_[d.itype][d.jtype] : 0.0; }
-  void set_state(double* hist, double flags) const {
-    hist[state_] = 8.0 * (static_cast<double>(host_->update->ntimestep) + 1.0) + flags;
+  void set_state(double* hist, double code) const {
+    hist[state_] = 8.0 * (static_cast<double>(host_->update->ntimestep) + 1.0) + code;
   }
 
   // The normal law on a probe (a copy of the contact data) at overlap xi on history `hist`, no
@@ -308,12 +357,13 @@ class TdemContactModel : public ContactModelBase {
     p = tdem::grid::power_exponent(r.elastic, hf.elastic, 1.0);
     q = tdem::grid::power_exponent(r.force - r.elastic, hf.force - hf.elastic, 0.0);
   }
-  // A step of a contact that needs more than the plain models: its first step (flags 0), or a
-  // corrected contact of a zero-force law, whose clip is watched.
+  // A step of a contact that needs more than the plain models: its first step (code 0 or a stale
+  // stamp), or a corrected contact whose end is watched (kFast, kWatched). `stamp`: 8 * the step.
   [[gnu::cold, gnu::noinline]] void event(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces,
-                                          double flags) {
+                                          double stamp) {
     double* const hist = sidata.contact_history;
-    if (flags == tdem::grid::kFlagOn) return watched_step(sidata, i_forces, j_forces);
+    const double code = hist[state_] - stamp;
+    if (code == kFast || code == kWatched) return watched_step(sidata, i_forces, j_forces, code);
     surfaceModel.surfacesIntersect(sidata, i_forces, j_forces);
     const double h = host_->update->dt, xi = sidata.deltan, rate = -sidata.vn;
     const double tau = tdem::grid::touch_age(xi, rate, h);
@@ -323,7 +373,7 @@ class TdemContactModel : public ContactModelBase {
     }
     double fresh[tdem_grid::kMaxHistory];
     std::memcpy(fresh, hist, sizeof(double) * hsize_);
-    const SurfacesIntersectData at_touch = sidata;
+    SurfacesIntersectData at_touch = sidata;
     const tdem::NormalResult<double> nr = normalModel.law(sidata);  // commits the normal history
     Kick a;
     {
@@ -344,7 +394,7 @@ class TdemContactModel : public ContactModelBase {
     if (tdem::grid::sliding(a.force_squared(), friction(sidata), fn)) {
       t = Kick::combine(a, a, [&](double x, double) { return x / fn * fn_apply; });
     } else {  // linear from the law at the touch (spring 0)
-      SurfacesIntersectData probe = at_touch;
+      SurfacesIntersectData& probe = at_touch;  // (not needed any more)
       normal_at(probe, 0.0, fresh);
       const Kick b = tangential_at(probe);
       t = Kick::combine(a, b, [&](double x, double x0) { return tdem::grid::start_force(x - x0, 1.0, x0, 0.0, tau, h); });
@@ -354,14 +404,21 @@ class TdemContactModel : public ContactModelBase {
       tdem_grid::StepGuard g(host_->update, tau);
       rollingModel.surfacesIntersect(sidata, i_forces, j_forces);
     }
-    set_state(hist, tdem::grid::kFlagOn);
+    set_state(hist, rate * h > gap_ * sidata.radsum ? kFast : on_);
     hist[meff_] = sidata.meff;
   }
 
-  // A corrected contact of a zero-force law: the plain step, and the end if its force was
-  // clipped to zero (the history of the last step, saved before this one, reconstructs it).
-  void watched_step(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces) {
+  // A corrected contact whose end is watched (its code `on`: kFast or kWatched). A fast one
+  // foresees an end beyond the contact distance. One of a zero-force law: the plain step, and the
+  // end if its force was clipped to zero (the history of the last step, saved before this one,
+  // reconstructs it).
+  void watched_step(SurfacesIntersectData& sidata, ForceData& i_forces, ForceData& j_forces, double on) {
     double* const hist = sidata.contact_history;
+    if (!watch_clip_) {
+      plain(sidata, i_forces, j_forces);
+      set_state(hist, on);
+      return foresee_end(sidata);
+    }
     double prev[tdem_grid::kMaxHistory];
     std::memcpy(prev, hist, sizeof(double) * hsize_);
     surfaceModel.surfacesIntersect(sidata, i_forces, j_forces);
@@ -371,7 +428,8 @@ class TdemContactModel : public ContactModelBase {
     cohesionModel.surfacesIntersect(sidata, i_forces, j_forces);
     tangentialModel.surfacesIntersect(sidata, i_forces, j_forces);
     rollingModel.surfacesIntersect(sidata, i_forces, j_forces);
-    if (nr.force > 0.0) return set_state(hist, tdem::grid::kFlagOn);
+    if (on == kFast) foresee_end(now);
+    if (nr.force > 0.0) return set_state(hist, on);
     set_state(hist, tdem::grid::kFlagEnded);
     const double h = host_->update->dt, xi = now.deltan, rate = -now.vn;
     SurfacesIntersectData probe = now;
@@ -419,7 +477,7 @@ class TdemContactModel : public ContactModelBase {
     std::memcpy(prev, sidata.contact_history, sizeof(double) * hsize_);
     const double h = host_->update->dt, xi = k.deltan, rate = -k.vn;
     const double xi_prev = tdem::grid::previous_overlap(xi, rate, h);
-    SurfacesIntersectData probe = k;
+    SurfacesIntersectData& probe = k;  // (its geometry stays: the law and the tangential model only read it)
     const tdem::NormalResult<double> np = normal_at(probe, xi_prev, prev);
     const double fp = np.force;
     if (!tdem::grid::end_usable(xi_prev, fp, xi, false)) return;
@@ -431,8 +489,7 @@ class TdemContactModel : public ContactModelBase {
     const bool slide = tdem::grid::sliding(p.force_squared(), friction(k), fp);
     double cap = 1.0;
     if (!slide) {  // the factor that caps the last kick by the limit at the end: from the law there
-      SurfacesIntersectData at_end = k;
-      const double fe = normal_at(at_end, 0.0, prev).force;
+      const double fe = normal_at(probe, 0.0, prev).force;
       probe.Fn = fe;
       const double p2 = p.force_squared(), e2 = tangential_at(probe).force_squared();
       if (e2 < p2) cap = std::sqrt(e2 / p2);
@@ -445,8 +502,15 @@ class TdemContactModel : public ContactModelBase {
   LAMMPS_NS::LAMMPS* host_;
   bool setting_ = false;     // the keyword's value (checked against GC)
   bool watch_clip_ = false;  // the law ends at zero force: its corrected contacts are watched
-  unsigned plain_flags_ = 0;  // bit f: a contact with flags f at the last step runs the plain models
   bool warned_ = false;
+  // kLivePass: the pair's pass updates the history (computeflag and shearupdate; beginPass);
+  // kWall: a wall fix's model (no beginPass), whose contacts take the pass's constants each
+  enum Mode { kIdle, kLivePass, kWall };
+  const bool is_wall_;
+  Mode mode_;
+  double stamp_ = 0.0;       // 8 * the pass's step
+  double lo_ = 0.0;          // stamp_ + 1: a state below it is an event
+  double on_ = 0.0;          // the code of a corrected contact that is not fast
   double gap_ = 0.0;         // the contact distance factor - 1
   int state_ = 0, meff_ = 0, hsize_ = 0;
   double** mu_ = nullptr;

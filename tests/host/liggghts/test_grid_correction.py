@@ -21,6 +21,12 @@ mpi       A bed of spheres falling onto the floor (dense collisions, side walls)
           correction on: -np 2 equals -np 1 to 1e-8 relative after 4000 steps (0.2 s), and
           `run; write_restart` / `read_restart; run` on 2 ranks equals the uninterrupted run to
           1e-10; the run without the correction differs (control).
+fast_end  Fast impacts (tdem/lsd, velocity_verlet_ab2, 3 m/s at the step of 25.37 steps per contact at
+          1 m/s: the approach speed times the step is 2.4 % of the radius, the gap at the first step
+          apart up to 1.9 %): with the default contact distance factor (1.01) the warning that an end
+          lies beyond the contact distance is printed; with neigh_modify contact_distance_factor
+          1.05 it is not, and e equals the harness for 4 phases of the touch. The 1 m/s impacts
+          (gap per step 0.8 %) print no warning.
 bad_input grid_correction without a value or with a wrong one: ERROR naming the keyword and the
           allowed values; with a stock normal model (hertz): ERROR.
 """
@@ -382,6 +388,43 @@ run %d
                  "(<= 1e-8)" % (n // 2, dev))
 
 
+UNSEEN = "gap beyond the contact distance"
+
+
+def part_fast_end(args, checks):
+    if not args.collide:
+        checks.check(False, "fast_end: --collide (tdem-collide) not given")
+        return
+    base = collide(args, checks, LSD_H + ["--m1", repr(MASS), "--R1", repr(R), "--wall", "--v0", repr(V0)])
+    if base is None:
+        return
+    dt = float("%.6g" % (base["contact_time"] / SPC))
+    nsteps = int(4 + 1.6 * SPC + 40)
+    for v, factor, warn in ((V0, None, False), (3.0 * V0, None, True), (3.0 * V0, 1.05, False)):
+        impacts = [("velocity_verlet_ab2", (3 + (k + 0.5) / PHASES) * v * dt, v, 0.0) for k in range(PHASES)]
+        text = wall_impacts(LSD, LSD_PROPS, dt, impacts, nsteps)
+        if factor:
+            text = text.replace("neigh_modify delay 0", "neigh_modify delay 0 contact_distance_factor %r" % factor)
+        d = T.workdir(args, "tdem_lig_gc_fast")
+        r = T.run(args.tdem, text, d, "h")
+        out = r.stdout + r.stderr
+        what = "v0 %g m/s (v0 dt / R = %.3f), contact distance factor %s" % (v, v * dt / R, factor or "1.01 (default)")
+        checks.check((UNSEEN in out) == warn, "%s: the unseen-end warning %s" % (what, "printed" if UNSEEN in out
+                                                                                  else "not printed"))
+        if not factor:
+            continue
+        a = T.read_dump(os.path.join(d, "dump.h"))[-1][2]
+        cols = T.read_dump(os.path.join(d, "dump.h"))[-1][1]
+        for k, (scheme, gap, _, _) in enumerate(impacts):
+            h = collide(args, checks, LSD_H + ["--m1", repr(MASS), "--R1", repr(R), "--wall", "--v0", repr(v),
+                                               "--scheme", scheme, "--dt", repr(dt), "--gap", repr(gap),
+                                               "--grid-correction", "on"])
+            if h is not None:
+                e_host = a[k, cols.index("vz")] / v
+                checks.check(abs(e_host - h["e"]) <= 1e-9, "%s, phase %d: e host %.12f harness %.12f"
+                             % (what, k, e_host, h["e"]))
+
+
 def part_bad_input(args, checks):
     d = T.workdir(args, "tdem_lig_gc_bad")
     base = HEAD + """
@@ -405,7 +448,8 @@ run 0
 def main():
     args = T.parse_args(lambda p: (p.add_argument("--collide"), p.add_argument("--part", default="all")))
     checks = T.Checks()
-    parts = {"harness": part_harness, "unchanged": part_unchanged, "mpi": part_mpi, "bad_input": part_bad_input}
+    parts = {"harness": part_harness, "unchanged": part_unchanged, "mpi": part_mpi, "fast_end": part_fast_end,
+             "bad_input": part_bad_input}
     for name, f in parts.items():
         if args.part in ("all", name):
             f(args, checks)
