@@ -61,40 +61,6 @@ TDEM_KERNEL T touch_age(T xi, T xi_dot, T h) noexcept {
   return tau < h ? tau : h;
 }
 
-// The correction acts on resolved contacts only: at coarser steps (a few steps per contact, up to
-// the critical step) the models above, extrapolated over a window as long as the contact, can put
-// energy in where the uncorrected step does not. At its first step a contact is counted as
-// resolved when its elastic contact time, estimated from the law's elastic part there
-// (F = c xi^p, c = elastic / xi^p: t_c = 2 I(p) xi_max / v with xi_max = ((p+1) m* v^2 / (2c))^(1/(p+1))
-// and I(p) = sqrt(pi) Gamma(1 + 1/(p+1)) / Gamma(1/2 + 1/(p+1)), pi sqrt(m*/k) for p = 1), is at
-// least kMinSteps steps and its damping time m* / gamma (gamma the law's damping coefficient
-// there) at least kMinDampingSteps steps (a strongly damped contact ends within a step or two of
-// a zero-force end, whatever its elastic time); otherwise neither its start nor its end is
-// corrected (the contact is integrated as without the correction).
-inline constexpr double kMinSteps = 8.0;
-inline constexpr double kMinDampingSteps = 2.0;
-
-template <class T>
-inline bool resolved(T elastic, T p, T damping, T xi, T xi_dot, T meff, T h) noexcept {
-  if (!(elastic > T(0) && xi > T(0) && xi_dot > T(0) && meff > T(0))) return false;
-  if (damping * kMinDampingSteps * h > meff) return false;
-  if (p == T(1)) return T(M_PI) * std::sqrt(meff * xi / elastic) >= kMinSteps * h;  // pi sqrt(m*/k)
-  const T c = elastic / std::pow(xi, p);
-  const T xi_max = std::pow((p + T(1)) * meff * xi_dot * xi_dot / (T(2) * c), T(1) / (p + T(1)));
-  const T a = T(1) / (p + T(1));
-  const T shape = p == T(1.5) ? T(1.471637592162353) : std::sqrt(T(M_PI)) * std::tgamma(T(1) + a) / std::tgamma(T(0.5) + a);
-  return T(2) * xi_max / xi_dot * shape >= kMinSteps * h;
-}
-
-// The force near an event as a sum of two powers of the time t' from the event (the touch, or
-// the end backwards in time):
-//     F(t') = e (t'/t_ref)^p + d (t'/t_ref)^q,
-// e and d the force's two parts at the sample t' = t_ref (the elastic part and the rest, for a
-// normal law; the slope part and the value at the event for a linear model), p and q their
-// exponents. Exact for the linear law (p = 1, q = 0), for Hertz (p = 3/2) with linear (q = 0),
-// Kuwabara-Kono (q = 1/2) or Tsuji (q = 1/4) damping along a straight approach: a linear model
-// in time cannot follow xi^(1/4) near the touch and does worse than no correction at all there.
-// Returns int_0^length F(t') dt'.
 // r^x (r > 0) without pow for a multiple of 1/4 in [-4, 4]: the exponents of the common laws
 // (Hertz 3/2, Tsuji's 1/4, Kuwabara-Kono's 1/2) and those of their near-window sums (x + 1, x + 2,
 // x - 3); a start or an end of a Hertz + Tsuji contact takes about 30 powers. Whole r factors times
@@ -116,6 +82,41 @@ TDEM_KERNEL T power(T r, T x) noexcept {
   return x < T(0) ? T(1) / result : result;
 }
 
+// The correction acts on resolved contacts only: at coarser steps (a few steps per contact, up to
+// the critical step) the models above, extrapolated over a window as long as the contact, can put
+// energy in where the uncorrected step does not. At its first step a contact is counted as
+// resolved when its elastic contact time, estimated from the law's elastic part there
+// (F = c xi^p, c = elastic / xi^p: t_c = 2 I(p) xi_max / v with xi_max = ((p+1) m* v^2 / (2c))^(1/(p+1))
+// and I(p) = sqrt(pi) Gamma(1 + 1/(p+1)) / Gamma(1/2 + 1/(p+1)), pi sqrt(m*/k) for p = 1), is at
+// least kMinSteps steps and its damping time m* / gamma (gamma the law's damping coefficient
+// there) at least kMinDampingSteps steps (a strongly damped contact ends within a step or two of
+// a zero-force end, whatever its elastic time); otherwise neither its start nor its end is
+// corrected (the contact is integrated as without the correction).
+inline constexpr double kMinSteps = 8.0;
+inline constexpr double kMinDampingSteps = 2.0;
+
+template <class T>
+inline bool resolved(T elastic, T p, T damping, T xi, T xi_dot, T meff, T h) noexcept {
+  if (!(elastic > T(0) && xi > T(0) && xi_dot > T(0) && meff > T(0))) return false;
+  if (damping * kMinDampingSteps * h > meff) return false;
+  if (p == T(1)) return T(M_PI) * std::sqrt(meff * xi / elastic) >= kMinSteps * h;  // pi sqrt(m*/k)
+  // 2 xi_max / xi' shape >= kMinSteps h, with xi_max^(p+1) = (p + 1) m* xi'^2 / (2 c): compared
+  // as powers p + 1 (a multiple of 1/4 for the common laws: no pow)
+  const T c = elastic / power(xi, p);
+  const T a = T(1) / (p + T(1));
+  const T shape = p == T(1.5) ? T(1.471637592162353) : std::sqrt(T(M_PI)) * std::tgamma(T(1) + a) / std::tgamma(T(0.5) + a);
+  return (p + T(1)) * meff * xi_dot * xi_dot / (T(2) * c) >= power(kMinSteps * h * xi_dot / (T(2) * shape), p + T(1));
+}
+
+// The force near an event as a sum of two powers of the time t' from the event (the touch, or
+// the end backwards in time):
+//     F(t') = e (t'/t_ref)^p + d (t'/t_ref)^q,
+// e and d the force's two parts at the sample t' = t_ref (the elastic part and the rest, for a
+// normal law; the slope part and the value at the event for a linear model), p and q their
+// exponents. Exact for the linear law (p = 1, q = 0), for Hertz (p = 3/2) with linear (q = 0),
+// Kuwabara-Kono (q = 1/2) or Tsuji (q = 1/4) damping along a straight approach: a linear model
+// in time cannot follow xi^(1/4) near the touch and does worse than no correction at all there.
+// Returns int_0^length F(t') dt'.
 template <class T>
 TDEM_KERNEL T power_impulse(T e, T p, T d, T q, T t_ref, T length) noexcept {
   const T floor = T(1e-12) * length;
