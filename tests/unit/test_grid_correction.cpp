@@ -73,6 +73,29 @@ TEST(GridCorrection, PowerExponent) {
   EXPECT_EQ(grid::power_exponent(1.0, -1.0, 7.0), 7.0);
 }
 
+// The exponents normal hertz declares to the hosts (in place of their probe at xi/2) are what the
+// probe of the law gives, for every damping member, approaching and receding; none with a force
+// clipped at zero.
+TEST(GridCorrection, HertzDeclaredExponentsEqualTheProbe) {
+  using hertz::Damping;
+  for (Damping d : {Damping::linear, Damping::kuwabara_kono, Damping::tsuji, Damping::general}) {
+    const hertz::Params<double> par{2.0e7, d == Damping::tsuji ? 0.8 : 3.0, 0.3};
+    double p = -1.0, q = -1.0;
+    ASSERT_TRUE(hertz::power_exponents(d, par.theta, ContactEnd::zero_overlap, p, q));
+    for (double rate : {0.7, -0.4})
+      for (double xi : {1e-7, 3e-5}) {
+        const NormalKinematics<double> at{xi, rate, 0.01, 1e-3}, half{0.5 * xi, rate, 0.01, 1e-3};
+        const NormalResult<double> a = hertz::force(d, ContactEnd::zero_overlap, par, at),
+                                   b = hertz::force(d, ContactEnd::zero_overlap, par, half);
+        EXPECT_EQ(p, grid::power_exponent(a.elastic, b.elastic, 1.0)) << hertz::to_string(d);
+        EXPECT_NEAR(q, grid::power_exponent(a.force - a.elastic, b.force - b.elastic, 0.0), 1e-12)
+            << hertz::to_string(d);
+      }
+  }
+  double p, q;
+  EXPECT_FALSE(hertz::power_exponents(Damping::tsuji, 0.0, ContactEnd::zero_force, p, q));
+}
+
 // The start force is the whole kick of the contact up to the end of the window, and the sum of
 // the next windows' sampling errors of a t'^x part (x < 1): against the direct sum over 20000
 // windows of (integral - h sample), each by quadrature, plus the integral of the first window.

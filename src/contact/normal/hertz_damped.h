@@ -48,6 +48,18 @@ inline constexpr double damping_exponent(Damping d) {
   return d == Damping::linear ? 0.0 : d == Damping::kuwabara_kono ? 0.5 : d == Damping::tsuji ? 0.25 : -1.0;
 }
 
+// The exponents in xi of the force's two parts as the time-grid correction models them
+// (grid_correction.h: power_impulse): the elastic part 3/2, the damping part Theta (along a straight
+// approach, where xi' is constant). Hosts take them in place of probing the law at xi/2. Only for
+// ContactEnd::zero_overlap: a force clipped at zero does not scale as its parts (false: probe).
+template <class T>
+inline constexpr bool power_exponents(Damping d, T theta, ContactEnd end, T& p, T& q) {
+  if (end != ContactEnd::zero_overlap) return false;
+  p = T(1.5);
+  q = d == Damping::general ? theta : T(damping_exponent(d));
+  return true;
+}
+
 // Per-pair parameters. The adapter computes k~ for the pair (stiffness(E*, R*)).
 template <class T>
 struct Params {

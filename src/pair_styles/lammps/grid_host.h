@@ -99,14 +99,20 @@ tdem::NormalResult<double> gc_probe_normal(const GcContact &k, const double *his
 
 // The exponents of the law's two parts (elastic, rest) at overlap xi, given its result r there: a
 // second evaluation at xi/2, except for the linear law (lsd modes: 1 and 0, what the evaluation
-// gives exactly; skipping it saves a fifth of an event's instructions on the chute).
+// gives exactly; skipping it saves a fifth of an event's instructions on the chute) and for normal
+// hertz without limit_force (declared by the law: 3/2 and Theta).
 template <int M, int E, int S, int TL, int D>
 void gc_exponents(const GcContact &k, const double *hist, double xi, const tdem::NormalResult<double> &r,
                   double &p, double &q) {
-  if ((M >= 0 ? M : k.c->mode) <= MODE_RESTITUTION) {
+  const int mode = M >= 0 ? M : k.c->mode;
+  if (mode <= MODE_RESTITUTION) {
     p = 1.0, q = 0.0;
     return;
   }
+  if (mode == MODE_HERTZ &&
+      tdem::hertz::power_exponents(hertz_damping(k.c->hdamp), k.c->htheta,
+                                   k.c->end ? tdem::ContactEnd::zero_force : tdem::ContactEnd::zero_overlap, p, q))
+    return;
   const tdem::NormalResult<double> hf = gc_probe_normal<M, E, S, TL, D>(k, hist, 0.5 * xi);
   p = tdem::grid::power_exponent(r.elastic, hf.elastic, 1.0);
   q = tdem::grid::power_exponent(r.force - r.elastic, hf.force - hf.elastic, 0.0);

@@ -130,6 +130,11 @@ class NormalModel<TDEM_HERTZ> : public NormalModelBase {
   }
   tdem::ContactEnd contact_end() const { return end_; }
   static constexpr bool linear = false;
+  // The exponents of the force's two parts for the grid correction (tdem_liggghts_grid.h), in place
+  // of its probe of the law at xi/2 (false with limitForce on: it probes).
+  bool power_exponents(const SurfacesIntersectData& d, double& p, double& q) const {
+    return tdem::hertz::power_exponents(damping_, coef_(d.itype, d.jtype).theta, end_, p, q);
+  }
 
   void surfacesClose(SurfacesCloseData& scdata, ForceData&, ForceData&) {
     if (scdata.contact_flags) *scdata.contact_flags |= CONTACT_NORMAL_MODEL;

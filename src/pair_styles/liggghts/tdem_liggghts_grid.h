@@ -17,7 +17,7 @@
 //  - start: the first contact step of a pair (code 0 or a stale stamp). If the touch tau = xi / xi'
 //    lies within the last step and the contact is resolved (grid::resolved), the normal kick is the
 //    power model's (grid::start_force; its exponents from the law at xi/2, except for the linear
-//    law) and the tangential spring starts at the touch (the tangential and rolling models run with
+//    law and a law that declares them) and the tangential spring starts at the touch (the tangential and rolling models run with
 //    dt = tau); the tangential kick follows the normal one while sliding, else it is linear from
 //    the law at the touch. Otherwise the contact is evaluated as without the correction.
 //  - end: the first step without contact (surfacesClose; the contact distance is raised to
@@ -34,6 +34,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <type_traits>
 
 #include "contact_models.h"
 #include "atom.h"
@@ -63,6 +64,13 @@ inline constexpr int kMaxHistory = 64;
 // A corrected contact that has not ended has a code in (0, 1].
 inline constexpr double kFast = 0.25;    // its approach speed times the step exceeds the contact distance
 inline constexpr double kWatched = 0.5;  // of a zero-force law: its clip is watched
+
+// A normal model that declares its exponents (bool power_exponents(data, p, q): false where it
+// cannot) spares the correction the probe of the law at xi/2 at every start and end.
+template <class M, class = void>
+struct DeclaresExponents : std::false_type {};
+template <class M>
+struct DeclaresExponents<M, std::void_t<decltype(&M::power_exponents)>> : std::true_type {};
 
 // The tangential (and rolling) models read update->dt: a start runs them with the time since the
 // touch.
@@ -351,6 +359,9 @@ class TdemContactModel : public ContactModelBase {
     if constexpr (NormalModel<Style::MODEL>::linear) {
       p = 1.0, q = 0.0;
       return;
+    }
+    if constexpr (tdem_grid::DeclaresExponents<NormalModel<Style::MODEL>>::value) {
+      if (normalModel.power_exponents(data, p, q)) return;
     }
     double copy[tdem_grid::kMaxHistory];
     std::memcpy(copy, hist, sizeof(double) * hsize_);
