@@ -65,6 +65,7 @@
 #include "collision/head_on.h"
 #include "collision/multi_eval.h"
 #include "collision/oblique.h"
+#include "contact/energy.h"
 #include "contact/grid_correction.h"
 #include "integrators/schemes.h"
 
@@ -146,6 +147,8 @@ struct ImpactOptions {
   // contact point as LIGGGHTS's surface model (also in the slip velocity; at an end step, where xi
   // < 0, as LIGGGHTS computes it there)
   double lever_factor = 0.0;
+  bool energy = false;             // account the work of each part of the contact force (contact/
+                                   // energy.h; one-evaluation schemes)
 };
 
 struct ImpactResult : ObliqueResult {
@@ -156,6 +159,11 @@ struct ImpactResult : ObliqueResult {
   // estimated them (the touch tau before its first step, the end s after its last); NaN otherwise
   double contact_time_interpolated = NAN;
   long evaluations = 0;    // force evaluations in all
+  // with ImpactOptions::energy (one-evaluation schemes): the work of each part of the contact force
+  // over the run (-W: taken out of the motion), and the balance K~ - K~(0) - W after every step,
+  // K~ = K - h^2/8 (m |a|^2 + I |alpha|^2) (energy.h): its largest size and its value at the end
+  energy::Work<double> work;
+  double energy_residual_max = NAN, energy_residual_end = NAN;
 };
 
 inline void validate(const ImpactSetup& s) {
@@ -285,6 +293,14 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
                                     law_prev.friction(), gc_prev.fn);
   };
   // F = F_n n + F_t on the sphere as accelerations; torque -c n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
+  energy::Loads<double> loads;  // of the last evaluation, by part (opt.energy)
+  auto load_of = [&](double fn, const double* ft, double xi) {  // F = F_n n + F_t, torque -c n x F_t
+    energy::Load<double> l;
+    const double c = lever(xi);
+    l.f[0] = ft[0], l.f[1] = ft[1], l.f[2] = fn + ft[2];
+    l.ti[0] = c * ft[1], l.ti[1] = -c * ft[0];
+    return l;
+  };
   auto to_acceleration = [&](double fn, const double* ft, double xi, Acc& out) {
     const double c = lever(xi);
     out.a[0] = ft[0] / m;
@@ -326,6 +342,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     double xi;
     geometry(y, xi, out.vt);
     for (int k = 0; k < 3; ++k) out.a[k] = out.al[k] = 0.0;
+    if (opt.energy) loads = energy::Loads<double>{};
     const double xi_dot = -y.v()[2];
     last.contact = xi > 0.0 || (xi == 0.0 && xi_dot > 0.0);
     const bool gc = opt.grid_correction && incr_dt < 0.0;
@@ -343,6 +360,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
           double fn_x, ft_x[3];
           end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, fn_x, ft_x);
           to_acceleration(fn_x, ft_x, xi, out);
+          if (opt.energy) loads.part[energy::grid_correction] = load_of(fn_x, ft_x, xi);
         }
       }
       if (gc) gc_prev = GcPrev{};
@@ -431,6 +449,13 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       }
     }
     to_acceleration(fn_apply, ft_apply, xi, out);
+    if (opt.energy) {
+      const double none[3] = {0.0, 0.0, 0.0}, ft_x[3] = {ft_apply[0] - ft[0], ft_apply[1] - ft[1], ft_apply[2] - ft[2]};
+      loads.part[energy::normal_elastic] = load_of(nr.elastic, none, xi);
+      loads.part[energy::normal_damping] = load_of(nr.force - nr.elastic, none, xi);
+      loads.part[energy::tangential] = load_of(0.0, ft, xi);
+      loads.part[energy::grid_correction] = load_of(fn_apply - nr.force, ft_x, xi);
+    }
     last.xi = xi, last.xi_dot = xi_dot, last.fn = nr.force, last.ft_t = ft[0], last.vs_t = out.vt[0];
     last.sliding = sliding;
     return true;
@@ -502,13 +527,25 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       double hr[KR::history > 0 ? KR::history : 1] = {0.0};
       integrators::start<S, true>(y.x(), y.v(), acc.a, ht, h);
       integrators::start<S, false>(nullptr, y.w(), acc.al, hr, h);
+      // the energy balance (opt.energy): the kick-drift-kick kinetic energy K~, the step's drift
+      auto ktilde = [&]() { return energy::kinetic_kdk(m, I, y.v(), y.w(), acc.a, acc.al, h); };
+      const double kt0 = ktilde();
+      energy::Loads<double> before = loads;
+      if (opt.energy) r.energy_residual_max = 0.0;
       while (!done && r.steps < max_steps) {
+        const energy::Motion<double> d = energy::drift(y.v(), y.w(), acc.a, acc.al, h);
         KT::predict(y.x(), y.v(), acc.a, ht, h);
         KR::predict(nullptr, y.w(), acc.al, hr, h);
         evaluate(y, tang, -1.0, nullptr, true, acc);
         ++r.evaluations;
         KT::correct(y.x(), y.v(), acc.a, ht, h);
         KR::correct(nullptr, y.w(), acc.al, hr, h);
+        if (opt.energy) {
+          energy::accumulate(r.work, before, loads, d);
+          before = loads;
+          r.energy_residual_end = ktilde() - kt0 - r.work.total();
+          r.energy_residual_max = std::max(r.energy_residual_max, std::fabs(r.energy_residual_end));
+        }
         if (!std::isfinite(y.v()[2]) || !std::isfinite(y.x()[2])) {
           finite = false;
           break;

@@ -26,7 +26,7 @@ class Args {
         "--e-fit", "--e-coef", "--tc-fit", "--tc-coef", "--v-min", "--v-max", "--e-min", "--al", "--p",
         "--aul", "--q", "--angle", "--spin", "--spin2", "--tangential", "--mu", "--kt", "--kappa", "--gammat",
         "--friction-limit", "--slip-reset", "--gstar", "--eta-ratio", "--beta0", "--psi-kappa", "--lever-arm",
-        "--analytic", "--scheme", "--gap", "--phases", "--grid-correction", "--params"};
+        "--analytic", "--scheme", "--gap", "--phases", "--grid-correction", "--energy", "--params"};
     for (int i = 1; i < argc; ++i) {
       std::string a = argv[i];
       if (a == "-h") a = "--help";

@@ -123,6 +123,12 @@ Integration and output:
                           with a one-evaluation --scheme: correct the step in which the contact
                           starts and the step in which it ends for where the touch and the end
                           fall between grid points (contact/grid_correction.h; default off)
+  --energy on|off         with a one-evaluation --scheme: account the work of each part of the
+                          contact force (contact/energy.h): "energy": the energy each part took
+                          out of the motion (normal_elastic, normal_damping, tangential, rolling,
+                          grid_correction), their total, the kinetic energy lost, and the balance
+                          K~ - K~(0) - W, K~ = K - h^2/8 (m|a|^2 + I|alpha|^2), which closes to
+                          round-off for the kick-drift-kick schemes (velocity_verlet*); default off
   --gap GAP               with --scheme: the start gap [m], >= 0 (default 0: touch at t = 0)
   --phases P              with --scheme: P runs with gap GAP + (i + 1/2)/P v_n0 dt, i = 0..P-1
                           (the contact start phase on the time grid); prints the means and, where

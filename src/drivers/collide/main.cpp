@@ -102,12 +102,19 @@ Run run(Args& a) {
         throw BadInput("option --grid-correction on needs a one-evaluation scheme (the host's step); '" + name +
                        "' evaluates the force " + std::to_string(S.scheme.evaluations()) + " times per step");
     }
+    if (a.has("--energy")) {
+      S.opt.energy = a.choice("--energy", {"off", "on"}) == "on";
+      if (S.opt.energy && S.scheme.multi)
+        throw BadInput("option --energy on needs a one-evaluation scheme (the balance of a kick-drift-kick "
+                       "step); '" + name + "' evaluates the force " + std::to_string(S.scheme.evaluations()) +
+                       " times per step");
+    }
     S.opt.dt = opt.dt;
     S.opt.lever_factor = run.obl.opt.lever == collision::LeverArm::contact_point ? 0.5 : 0.0;
     S.opt.steps_per_contact = a.has("--steps") ? opt.steps_per_contact : 1000;
     S.opt.record = opt.record;
   } else {
-    for (const char* o : {"--gap", "--phases", "--grid-correction"})
+    for (const char* o : {"--gap", "--phases", "--grid-correction", "--energy"})
       if (a.has(o)) throw BadInput(std::string("option ") + o + " needs --scheme");
   }
   if (run.analytic) analytic_check_oblique(a, run.obl);
@@ -436,6 +443,18 @@ void write_scheme(Json& j, const Run& r) {
   j.integer("history_per_particle", S.scheme.history());
   j.integer("contact_steps", S.one.contact_steps);
   j.integer("total_steps", S.one.steps);
+  if (S.opt.energy) {  // -W of each part (contact/energy.h) of the single run
+    const collision::ImpactResult& x = S.one;
+    j.open("energy");
+    j.open("dissipated");
+    for (int p = 0; p < energy::kParts; ++p) j.num(energy::part_names[p], -x.work.w[p]);
+    j.close();
+    j.num("total", -x.work.total());
+    j.num("kinetic_lost", x.dissipated_energy);
+    j.num("balance_residual_max", x.energy_residual_max);
+    j.num("balance_residual_end", x.energy_residual_end);
+    j.close();
+  }
   if (S.phases > 0) {
     j.integer("phases", S.phases);
     std::string es = "[";

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem: energy accounting of a contact (issue 23). Host-free: the harness (src/collision/
+// integrate_impact.h) and the hosts' computes use the same rules.
+//
+// The work each part of a contact's force does on the pair's motion, summed step by step. A part
+// is a generalised force, the force on i (j gets the opposite one) and the torques on i and j:
+//     Load = (f, t_i, t_j);
+// a step's motion is the displacement of i relative to j (a wall's own motion is the wall's work,
+// not the contact's) and the two rotations:
+//     Motion = (dx, dth_i, dth_j) = h (v_i - v_j, w_i, w_j), the velocities of the step's drift.
+// The work of a part over the step is the trapezoid of its loads at the two ends of the step
+//     W += (L_n + L_n+1) . d / 2.
+// Why this rule: a kick-drift-kick scheme (velocity Verlet, as fix nve/sphere; its variants whose
+// force sees a predicted velocity) changes the kinetic energy over a step by exactly
+//     K_n+1 - K_n = (F_n + F_n+1) . h v_n+1/2 / 2 + h^2/8 (|F_n+1|^2 - |F_n|^2) / m
+// (per particle and per rotation axis with I), so with the discrete kinetic energy
+//     K~ = K - h^2/8 |F|^2 / m              (kick_drift_kick_term)
+// the balance K~ + sum over contacts (-W) = const closes to round-off, whatever the force law, its
+// history or a time-grid correction does to the force. Other schemes leave a residual, which is
+// their energy error in that sense. In free flight K~ = K.
+//
+// The parts (Part): a normal law's conservative (or hysteretic) part `elastic` of NormalResult and
+// the rest (damping, and a clip at zero force); the tangential force with its torques; a rolling
+// torque; the extra force of the time-grid correction at a start or an end step. The energy taken
+// out of the motion by a part is -W. Over a whole contact (loads zero before and after):
+//   -W(normal elastic) = hysteresis of a hysteretic law, or the time-grid error of an elastic one
+//                        (its spring returns what it took, up to how the grid samples the start
+//                        and the end);
+//   -W(normal damping) = the energy the normal damper dissipated; and so on.
+#pragma once
+
+#include "kinematics.h"
+
+namespace tdem {
+namespace energy {
+
+enum Part : int { normal_elastic = 0, normal_damping, tangential, rolling, grid_correction, kParts };
+
+inline constexpr const char* part_names[kParts] = {"normal_elastic", "normal_damping", "tangential", "rolling",
+                                                   "grid_correction"};
+
+template <class T>
+struct Load {
+  T f[3] = {T(0), T(0), T(0)};   // force on i [N]
+  T ti[3] = {T(0), T(0), T(0)};  // torque on i [N m]
+  T tj[3] = {T(0), T(0), T(0)};  // torque on j [N m]
+};
+
+template <class T>
+struct Motion {
+  T dx[3] = {T(0), T(0), T(0)};   // displacement of i relative to j over the step [m]
+  T dti[3] = {T(0), T(0), T(0)};  // rotation of i [rad]
+  T dtj[3] = {T(0), T(0), T(0)};  // rotation of j [rad]
+};
+
+// The work a load would do over the motion.
+template <class T>
+TDEM_KERNEL T work(const Load<T>& l, const Motion<T>& d) noexcept {
+  T w = T(0);
+  for (int k = 0; k < 3; ++k) w += l.f[k] * d.dx[k] + l.ti[k] * d.dti[k] + l.tj[k] * d.dtj[k];
+  return w;
+}
+
+// The work of one part over a step: the trapezoid of its loads before and after the step.
+template <class T>
+TDEM_KERNEL T step_work(const Load<T>& before, const Load<T>& after, const Motion<T>& d) noexcept {
+  return T(0.5) * (work(before, d) + work(after, d));
+}
+
+// -h^2/8 |F|^2 / m (or |T|^2 / I for a rotation axis): what a kick-drift-kick scheme's kinetic
+// energy carries beyond the trapezoid work (see the header). f2 = |F|^2, inertia = m or I.
+template <class T>
+TDEM_KERNEL T kick_drift_kick_term(T f2, T inertia, T h) noexcept {
+  return -h * h * f2 / (T(8) * inertia);
+}
+
+// K~ of one body (mass m, isotropic inertia I; velocity v, spin w, accelerations a, alpha).
+template <class T>
+TDEM_KERNEL T kinetic_kdk(T m, T I, const T* v, const T* w, const T* a, const T* alpha, T h) noexcept {
+  T k = T(0);
+  for (int c = 0; c < 3; ++c)
+    k += T(0.5) * (m * v[c] * v[c] + I * w[c] * w[c]) + kick_drift_kick_term(m * m * a[c] * a[c], m, h) +
+         kick_drift_kick_term(I * I * alpha[c] * alpha[c], I, h);
+  return k;
+}
+
+// The motion of body i against a body at rest over a kick-drift-kick step from (v, w) with the
+// accelerations (a, alpha): h (v + h a / 2), the position update of velocity Verlet.
+template <class T>
+TDEM_KERNEL Motion<T> drift(const T* v, const T* w, const T* a, const T* alpha, T h) noexcept {
+  Motion<T> d;
+  for (int c = 0; c < 3; ++c) {
+    d.dx[c] = h * (v[c] + T(0.5) * h * a[c]);
+    d.dti[c] = h * (w[c] + T(0.5) * h * alpha[c]);
+  }
+  return d;
+}
+
+// A contact's accumulated work per part [J] (> 0: given to the motion).
+template <class T>
+struct Work {
+  T w[kParts] = {};
+  T total() const noexcept {
+    T s = T(0);
+    for (int p = 0; p < kParts; ++p) s += w[p];
+    return s;
+  }
+  void add(const Work& o) noexcept {
+    for (int p = 0; p < kParts; ++p) w[p] += o.w[p];
+  }
+};
+
+// The loads of all parts of a contact at one step.
+template <class T>
+struct Loads {
+  Load<T> part[kParts];
+};
+
+// One step of a contact: every part's trapezoid work over the motion d, from the loads before the
+// step to the loads after it.
+template <class T>
+TDEM_KERNEL void accumulate(Work<T>& acc, const Loads<T>& before, const Loads<T>& after, const Motion<T>& d) noexcept {
+  for (int p = 0; p < kParts; ++p) acc.w[p] += step_work(before.part[p], after.part[p], d);
+}
+
+}  // namespace energy
+}  // namespace tdem
