@@ -159,9 +159,8 @@ struct ImpactResult : ObliqueResult {
   // estimated them (the touch tau before its first step, the end s after its last); NaN otherwise
   double contact_time_interpolated = NAN;
   long evaluations = 0;    // force evaluations in all
-  // with ImpactOptions::energy (one-evaluation schemes): the work of each part of the contact force
-  // over the run (-W: taken out of the motion), and the balance K~ - K~(0) - W after every step,
-  // K~ = K - h^2/8 (m |a|^2 + I |alpha|^2) (energy.h): its largest size and its value at the end
+  // with ImpactOptions::energy: the work of each part of the contact force over the run (-W: taken
+  // out of the motion); the balance K~ - K~(0) - W (energy.h) of every step: largest size, last value
   energy::Work<double> work;
   double energy_residual_max = NAN, energy_residual_end = NAN;
 };
@@ -241,7 +240,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
   // contact step's overlap, normal force and stiffness, tangential force and sliding state as
   // reconstructed at an end (reconstruct_prev)
   struct GcPrev {
-    double xi = 0.0, fn = 0.0, k = 0.0, ft[3] = {0.0, 0.0, 0.0};
+    double xi = 0.0, fn = 0.0, fe = 0.0, k = 0.0, ft[3] = {0.0, 0.0, 0.0};  // (fe: elastic part of fn)
     bool sliding = false;
     bool on = false;     // this contact is corrected (its start was seen and resolved)
     bool ended = false;  // its zero-force end has been corrected
@@ -273,6 +272,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     gc_prev.xi = grid::previous_overlap(xi, xi_dot, h);
     const NormalResult<double> np = normal.force(gc_prev.xi, xi_dot, m, R, false);
     gc_prev.fn = np.force;
+    gc_prev.fe = np.elastic;
     gc_prev.k = np.stiffness;
     double xi_now;
     TangentialKin kp;
@@ -301,6 +301,12 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     l.ti[0] = c * ft[1], l.ti[1] = -c * ft[0];
     return l;
   };
+  auto set_loads = [&](double fe, double fn, const double* ft, double xi) {  // elastic fe of fn, F_t
+    const double none[3] = {0.0, 0.0, 0.0};
+    loads.part[energy::normal_elastic] = load_of(fe, none, xi);
+    loads.part[energy::normal_damping] = load_of(fn - fe, none, xi);
+    loads.part[energy::tangential] = load_of(0.0, ft, xi);
+  };
   auto to_acceleration = [&](double fn, const double* ft, double xi, Acc& out) {
     const double c = lever(xi);
     out.a[0] = ft[0] / m;
@@ -310,7 +316,9 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     out.al[1] = -c * ft[0] / I;
     out.al[2] = 0.0;
   };
-  auto end_correction = [&](const Y& y, const TangentialLaw& law, double xi_dot, double s, bool at_zero_force,
+  // (fe_out: the elastic part's share of fn_out, for the energy accounting: the power model's e-part,
+  // linear in the parts; at a zero-force end in the proportion of the last step's parts)
+  auto end_correction = [&](double& fe_out, const TangentialLaw& law, double xi_dot, double s, bool at_zero_force,
                             double& fn_out, double* ft_out) {
     if (std::isfinite(gc_touch_time) && !std::isfinite(r.contact_time_interpolated))
       r.contact_time_interpolated = r.steps * h + s - gc_touch_time;
@@ -318,11 +326,13 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     if (at_zero_force) {
       fe = 0.0;
       fn_x = grid::end_extra(gc_prev.fn, gc_prev.fn, 1.0, 0.0, 0.0, s, h);
+      fe_out = gc_prev.fn != 0.0 ? fn_x * gc_prev.fe / gc_prev.fn : 0.0;
     } else {
       const NormalResult<double> np = normal.force(gc_prev.xi, xi_dot, m, R, false);
       const PowerParts pp = power_parts(gc_prev.xi, xi_dot, gc_prev.fn, np);
       fe = normal.force(0.0, xi_dot, m, R, false).force;
       fn_x = grid::end_extra(gc_prev.fn, pp.e, pp.p, pp.d, pp.q, s, h);
+      fe_out = grid::end_extra(pp.e, pp.e, pp.p, 0.0, pp.q, s, h);
     }
     // sliding: the tangential force follows the normal force (mu F_n); sticking: linear to the
     // last one capped by the limit at the end
@@ -357,10 +367,10 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         reconstruct_prev(y, law, xi, xi_dot);
         if (grid::end_usable(gc_prev.xi, gc_prev.fn, xi, false))
         {
-          double fn_x, ft_x[3];
-          end_correction(y, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, fn_x, ft_x);
+          double fn_x, fe_x, ft_x[3];
+          end_correction(fe_x, law, xi_dot, grid::end_time(gc_prev.xi, xi, h), false, fn_x, ft_x);
           to_acceleration(fn_x, ft_x, xi, out);
-          if (opt.energy) loads.part[energy::grid_correction] = load_of(fn_x, ft_x, xi);
+          if (opt.energy) set_loads(fe_x, fn_x, ft_x, xi);
         }
       }
       if (gc) gc_prev = GcPrev{};
@@ -411,7 +421,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       }
       sliding = law.force(k, false, ft);
     }
-    double fn_apply = nr.force, ft_apply[3] = {ft[0], ft[1], ft[2]};
+    double fn_apply = nr.force, fe_apply = nr.elastic, ft_apply[3] = {ft[0], ft[1], ft[2]};
     if (gc) {
       if (tau >= 0.0) {
         // the start: the power model through the law now, from the touch tau ago; the
@@ -420,6 +430,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         gc_touch_time = (r.steps + 1) * h - tau;
         const double pq = grid::power_exponent(nr.force - nr.elastic, half.force - half.elastic, 0.0);
         fn_apply = grid::start_force(nr.elastic, pe, nr.force - nr.elastic, pq, tau, h);
+        fe_apply = grid::start_force(nr.elastic, pe, 0.0, pq, tau, h);  // (linear in the parts)
         TangentialKin k0 = k;
         k0.overlap = 0.0;
         k0.fn = touch.force;
@@ -441,21 +452,16 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         else
           s_end = grid::end_time(gc_prev.fn, gc_prev.fn + gc_prev.k * xi_dot * h, h);
         if (grid::end_usable(gc_prev.xi, gc_prev.fn, xi, true)) {
-          double fn_x, ft_x[3];
-          end_correction(y, fresh_or_prev, xi_dot, s_end, true, fn_x, ft_x);
+          double fn_x, fe_x, ft_x[3];
+          end_correction(fe_x, fresh_or_prev, xi_dot, s_end, true, fn_x, ft_x);
           fn_apply += fn_x;
+          fe_apply += fe_x;
           for (int i = 0; i < 3; ++i) ft_apply[i] += ft_x[i];
         }
       }
     }
     to_acceleration(fn_apply, ft_apply, xi, out);
-    if (opt.energy) {
-      const double none[3] = {0.0, 0.0, 0.0}, ft_x[3] = {ft_apply[0] - ft[0], ft_apply[1] - ft[1], ft_apply[2] - ft[2]};
-      loads.part[energy::normal_elastic] = load_of(nr.elastic, none, xi);
-      loads.part[energy::normal_damping] = load_of(nr.force - nr.elastic, none, xi);
-      loads.part[energy::tangential] = load_of(0.0, ft, xi);
-      loads.part[energy::grid_correction] = load_of(fn_apply - nr.force, ft_x, xi);
-    }
+    if (opt.energy) set_loads(fe_apply, fn_apply, ft_apply, xi);  // (the correction's extra in its parts)
     last.xi = xi, last.xi_dot = xi_dot, last.fn = nr.force, last.ft_t = ft[0], last.vs_t = out.vt[0];
     last.sliding = sliding;
     return true;

@@ -21,8 +21,8 @@
 //
 // The parts (Part): a normal law's conservative (or hysteretic) part `elastic` of NormalResult and
 // the rest (damping, and a clip at zero force); the tangential force with its torques; a rolling
-// torque; the extra force of the time-grid correction at a start or an end step. The energy taken
-// out of the motion by a part is -W. Over a whole contact (loads zero before and after):
+// torque. The time-grid correction's extra force at a start or an end step belongs to the parts it
+// corrects (its power model is linear in them). The energy taken out of the motion by a part is -W. Over a whole contact (loads zero before and after):
 //   -W(normal elastic) = hysteresis of a hysteretic law, or the time-grid error of an elastic one
 //                        (its spring returns what it took, up to how the grid samples the start
 //                        and the end);
@@ -34,10 +34,9 @@
 namespace tdem {
 namespace energy {
 
-enum Part : int { normal_elastic = 0, normal_damping, tangential, rolling, grid_correction, kParts };
+enum Part : int { normal_elastic = 0, normal_damping, tangential, rolling, kParts };
 
-inline constexpr const char* part_names[kParts] = {"normal_elastic", "normal_damping", "tangential", "rolling",
-                                                   "grid_correction"};
+inline constexpr const char* part_names[kParts] = {"normal_elastic", "normal_damping", "tangential", "rolling"};
 
 template <class T>
 struct Load {

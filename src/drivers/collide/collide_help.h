@@ -125,8 +125,8 @@ Integration and output:
                           fall between grid points (contact/grid_correction.h; default off)
   --energy on|off         with a one-evaluation --scheme: account the work of each part of the
                           contact force (contact/energy.h): "energy": the energy each part took
-                          out of the motion (normal_elastic, normal_damping, tangential, rolling,
-                          grid_correction), their total, the kinetic energy lost, and the balance
+                          out of the motion (normal_elastic, normal_damping, tangential, rolling),
+                          their total, the kinetic energy lost, and the balance
                           K~ - K~(0) - W, K~ = K - h^2/8 (m|a|^2 + I|alpha|^2), which closes to
                           round-off for the kick-drift-kick schemes (velocity_verlet*); default off
   --gap GAP               with --scheme: the start gap [m], >= 0 (default 0: touch at t = 0)
