@@ -177,7 +177,6 @@ inline void validate(const ImpactSetup& s) {
   if (!(s.gap >= 0.0) || !std::isfinite(s.gap)) checks::fail("gap", s.gap, "[0, inf)");
 }
 
-
 // ---------------------------------------------------------------- the integrator
 template <class NormalLaw, class TangentialLaw>
 ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const ImpactScheme& scheme,
@@ -533,13 +532,14 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
       double hr[KR::history > 0 ? KR::history : 1] = {0.0};
       integrators::start<S, true>(y.x(), y.v(), acc.a, ht, h);
       integrators::start<S, false>(nullptr, y.w(), acc.al, hr, h);
-      // the energy balance (opt.energy): the kick-drift-kick kinetic energy K~, the step's drift
-      auto ktilde = [&]() { return energy::kinetic_kdk(m, I, y.v(), y.w(), acc.a, acc.al, h); };
+      // the energy balance (opt.energy): the scheme's K~ and drift (velocity Verlet's for the others)
+      const auto form = static_cast<energy::Form>(std::max(integrators::energy_form(S), 0));
+      auto ktilde = [&]() { return energy::kinetic(form, m, I, y.v(), y.w(), acc.a, acc.al, h); };
       const double kt0 = ktilde();
       energy::Loads<double> before = loads;
       if (opt.energy) r.energy_residual_max = 0.0;
       while (!done && r.steps < max_steps) {
-        const energy::Motion<double> d = energy::drift(y.v(), y.w(), acc.a, acc.al, h);
+        const energy::Motion<double> d = energy::drift(form, y.v(), y.w(), acc.a, acc.al, h);
         KT::predict(y.x(), y.v(), acc.a, ht, h);
         KR::predict(nullptr, y.w(), acc.al, hr, h);
         evaluate(y, tang, -1.0, nullptr, true, acc);

@@ -19,6 +19,7 @@ struct ImpactReference {
   double e = NAN, beta = NAN, e_t = NAN, omega = NAN;               // omega: spin after [1/s]
   double rebound_angle_com = NAN, rebound_angle_contact = NAN;      // [rad]
   double contact_time = NAN;                                         // [s]
+  double dissipated_energy = NAN;  // kinetic energy lost by the impact [J] (issue 23)
 };
 
 struct PhaseAverage {
@@ -28,6 +29,9 @@ struct PhaseAverage {
   double e = NAN, beta = NAN, e_t = NAN, omega = NAN, rebound_angle_com = NAN, rebound_angle_contact = NAN;
   // |contact time - reference|: the interpolated one of a corrected run, else contact_steps * dt
   double contact_time = NAN;
+  // with ImpactOptions::energy: mean |kinetic energy lost - reference| [J] and mean largest balance
+  // residual (energy.h) [J]
+  double dissipated_energy = NAN, energy_residual = NAN;
   double mean_e = NAN;  // mean e itself
   double contact_steps = 0.0;  // mean
   double dt = 0.0;
@@ -48,7 +52,7 @@ PhaseAverage phase_averaged(NormalLaw& normal, TangentialLaw& tang, const Impact
   PhaseAverage pa;
   pa.phases = phases;
   pa.dt = dt;
-  double s[6] = {0, 0, 0, 0, 0, 0}, se = 0.0, sc = 0.0, stc = 0.0;
+  double s[6] = {0, 0, 0, 0, 0, 0}, se = 0.0, sc = 0.0, stc = 0.0, sde = 0.0, sres = 0.0;
   const double* refs[6] = {&ref.e, &ref.beta, &ref.e_t, &ref.omega, &ref.rebound_angle_com, &ref.rebound_angle_contact};
   for (int i = 0; i < phases; ++i) {
     ImpactSetup su = setup;
@@ -62,6 +66,8 @@ PhaseAverage phase_averaged(NormalLaw& normal, TangentialLaw& tang, const Impact
       stc += std::fabs(tc - ref.contact_time);
       se += res.e;
       sc += static_cast<double>(res.contact_steps);
+      sde += std::fabs(res.dissipated_energy - ref.dissipated_energy);
+      sres += res.energy_residual_max;  // (NaN without opt.energy)
     }
     if (keep_runs) pa.runs.push_back(std::move(res));
   }
@@ -71,6 +77,8 @@ PhaseAverage phase_averaged(NormalLaw& normal, TangentialLaw& tang, const Impact
     pa.mean_e = se / phases;
     pa.contact_time = stc / phases;
     pa.contact_steps = sc / phases;
+    pa.dissipated_energy = sde / phases;
+    pa.energy_residual = sres / phases;
   }
   return pa;
 }

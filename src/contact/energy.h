@@ -14,10 +14,11 @@
 // force sees a predicted velocity) changes the kinetic energy over a step by exactly
 //     K_n+1 - K_n = (F_n + F_n+1) . h v_n+1/2 / 2 + h^2/8 (|F_n+1|^2 - |F_n|^2) / m
 // (per particle and per rotation axis with I), so with the discrete kinetic energy
-//     K~ = K - h^2/8 |F|^2 / m              (kick_drift_kick_term)
+//     K~ = K - h^2/8 |F|^2 / m              (kinetic(), Form::kick_drift_kick)
 // the balance K~ + sum over contacts (-W) = const closes to round-off, whatever the force law, its
-// history or a time-grid correction does to the force. Other schemes leave a residual, which is
-// their energy error in that sense. In free flight K~ = K.
+// history or a time-grid correction does to the force. The symplectic schemes that kick and then
+// drift close it with their own K~ (Form::kick_then_drift). Other schemes leave a residual, which
+// is their energy error in that sense. In free flight K~ = K.
 //
 // The parts (Part): a normal law's conservative (or hysteretic) part `elastic` of NormalResult and
 // the rest (damping, and a clip at zero force); the tangential force with its torques; a rolling
@@ -66,31 +67,37 @@ TDEM_KERNEL T step_work(const Load<T>& before, const Load<T>& after, const Motio
   return T(0.5) * (work(before, d) + work(after, d));
 }
 
-// -h^2/8 |F|^2 / m (or |T|^2 / I for a rotation axis): what a kick-drift-kick scheme's kinetic
-// energy carries beyond the trapezoid work (see the header). f2 = |F|^2, inertia = m or I.
-template <class T>
-TDEM_KERNEL T kick_drift_kick_term(T f2, T inertia, T h) noexcept {
-  return -h * h * f2 / (T(8) * inertia);
-}
+// How the scheme moves a body over a step, and the kinetic energy its balance closes with:
+//   kick_drift_kick  velocity Verlet (fix nve/sphere) and its variants whose force sees a predicted
+//                    velocity: drift h (v + h a/2), K~ = K - h^2/8 (|F|^2/m + |T|^2/I) (the header);
+//   kick_then_drift  symplectic Euler, leapfrog (v the half-step velocity), position Verlet (v the
+//                    differenced one): v+ = v + h a, drift h v+; K_n+1 - K_n = F_n . h (v_n + v_n+1)/2,
+//                    which summed is the trapezoid work plus h/2 (F_0 . v_0 - F_n . v_n):
+//                    K~ = K + h/2 (F . v + T . w).
+// Other schemes close no such balance; their residual against kick_drift_kick is reported.
+enum class Form : int { kick_drift_kick = 0, kick_then_drift = 1 };
 
 // K~ of one body (mass m, isotropic inertia I; velocity v, spin w, accelerations a, alpha).
 template <class T>
-TDEM_KERNEL T kinetic_kdk(T m, T I, const T* v, const T* w, const T* a, const T* alpha, T h) noexcept {
+TDEM_KERNEL T kinetic(Form f, T m, T I, const T* v, const T* w, const T* a, const T* alpha, T h) noexcept {
   T k = T(0);
-  for (int c = 0; c < 3; ++c)
-    k += T(0.5) * (m * v[c] * v[c] + I * w[c] * w[c]) + kick_drift_kick_term(m * m * a[c] * a[c], m, h) +
-         kick_drift_kick_term(I * I * alpha[c] * alpha[c], I, h);
+  for (int c = 0; c < 3; ++c) {
+    k += T(0.5) * (m * v[c] * v[c] + I * w[c] * w[c]);
+    k += f == Form::kick_drift_kick ? -h * h / T(8) * (m * a[c] * a[c] + I * alpha[c] * alpha[c])
+                                    : T(0.5) * h * (m * a[c] * v[c] + I * alpha[c] * w[c]);
+  }
   return k;
 }
 
-// The motion of body i against a body at rest over a kick-drift-kick step from (v, w) with the
-// accelerations (a, alpha): h (v + h a / 2), the position update of velocity Verlet.
+// The motion of body i against a body at rest over the step from (v, w) with the accelerations
+// (a, alpha): h (v + c h a), c = 1/2 (kick_drift_kick: velocity Verlet's position update) or 1.
 template <class T>
-TDEM_KERNEL Motion<T> drift(const T* v, const T* w, const T* a, const T* alpha, T h) noexcept {
+TDEM_KERNEL Motion<T> drift(Form f, const T* v, const T* w, const T* a, const T* alpha, T h) noexcept {
+  const T c = f == Form::kick_drift_kick ? T(0.5) : T(1);
   Motion<T> d;
-  for (int c = 0; c < 3; ++c) {
-    d.dx[c] = h * (v[c] + T(0.5) * h * a[c]);
-    d.dti[c] = h * (w[c] + T(0.5) * h * alpha[c]);
+  for (int k = 0; k < 3; ++k) {
+    d.dx[k] = h * (v[k] + c * h * a[k]);
+    d.dti[k] = h * (w[k] + c * h * alpha[k]);
   }
   return d;
 }

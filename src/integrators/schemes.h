@@ -118,6 +118,23 @@ inline const SchemeInfo& info(Scheme s) {
   return table[static_cast<int>(s)];
 }
 
+// How a scheme moves a body over a step, for the energy balance of contact/energy.h (whose Form
+// values these are): 0 kick-drift-kick (velocity Verlet and its variants whose force sees a
+// predicted velocity: drift h (v + h a/2)); 1 kick then drift (symplectic Euler, leapfrog with its
+// half-step velocity, position Verlet with its differenced one: drift h (v + h a)); -1 neither (no
+// balance closes: the residual of form 0 is the scheme's energy error in that sense).
+inline int energy_form(Scheme s) {
+  switch (s) {
+    case Scheme::velocity_verlet:
+    case Scheme::velocity_verlet_sync:
+    case Scheme::velocity_verlet_ab2: return 0;
+    case Scheme::symplectic_euler:
+    case Scheme::leapfrog:
+    case Scheme::position_verlet: return 1;
+    default: return -1;
+  }
+}
+
 inline bool parse_scheme(const std::string& name, Scheme& out) {
   for (int i = 0; i < static_cast<int>(Scheme::count); ++i) {
     const Scheme s = static_cast<Scheme>(i);

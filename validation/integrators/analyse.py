@@ -304,6 +304,28 @@ for b in SHOWN_GC:
         cells.append(f"{fmt(on)} / {fmt(off)} ({on / off:.2f})" if on > 0 and off > 0 else "-")
     L.append(f"| {b} | " + " | ".join(cells) + " |")
 L.append("")
+L.append("## Energy per contact (issue 23)\n")
+L.append("The energy the impact took out of the motion (kinetic energy lost, translation and rotation) against "
+         "the closed form, \\|ΔE\\|/K0, phase-averaged, generic dt, next to \\|Δe\\|; and the largest residual of "
+         "the energy balance K~ − K~(0) − W of contact/energy.h over the run (W: the trapezoid work of the contact "
+         "force; K~ = K − h²/8 (\\|F\\|²/m + \\|T\\|²/I)), /K0: round-off for the kick-drift-kick schemes "
+         "(velocity Verlet and its variants), the scheme's energy error in that sense for the others. "
+         "One-evaluation schemes (the multi-evaluation ones have no such balance).\n")
+L.append("| scheme | \\|Δe\\| 5.2 N=25 | \\|ΔE\\|/K0 5.2 N=25 | \\|Δe\\| 5.2 N=80 | \\|ΔE\\|/K0 5.2 N=80 "
+         "| \\|ΔE\\|/K0 25° N=80 | \\|ΔE\\|/K0 Hertz–Tsuji N=80 | balance residual/K0 5.2 N=80 "
+         "| balance residual/K0 Hertz–Tsuji N=80 |")
+L.append("|" + "---|" * 9)
+for s in schemes:
+    if s in MULTI:
+        continue
+    L.append("| " + " | ".join([
+        s, fmt(err_at("headon_52", "generic", "err_e", s, 25)), fmt(err_at("headon_52", "generic", "err_energy_rel", s, 25)),
+        fmt(err_at("headon_52", "generic", "err_e", s, 80)), fmt(err_at("headon_52", "generic", "err_energy_rel", s, 80)),
+        fmt(err_at("oblique_25", "generic", "err_energy_rel", s, 80)),
+        fmt(err_at("headon_hertz_tsuji", "generic", "err_energy_rel", s, 80)),
+        fmt(err_at("headon_52", "generic", "energy_residual_rel", s, 80)),
+        fmt(err_at("headon_hertz_tsuji", "generic", "energy_residual_rel", s, 80))]) + " |")
+L.append("")
 L.append("## Cheapest scheme per accuracy (cost per contact, log-log interpolation in N = 5 … 500)\n")
 L.append("| target | cheapest (cost) | next (cost) | velocity_verlet (= nve/sphere) cost |")
 L.append("|---|---|---|---|")

@@ -64,6 +64,8 @@ Case<LsdLaw> make_case(const std::string& name, double m, double R, double kn, d
   c.ref.rebound_angle_contact = x.rebound_angle_contact;
   c.tc = x.contact_time;
   c.ref.contact_time = x.contact_time;
+  const double I = 0.4 * m * R * R;
+  c.ref.dissipated_energy = 0.5 * m * speed * speed - 0.5 * m * (x.vn * x.vn + x.vt * x.vt) - 0.5 * I * x.omega * x.omega;
   return c;
 }
 
@@ -92,6 +94,7 @@ Case<HertzLaw> make_hertz_case() {
   c.ref.rebound_angle_com = c.ref.rebound_angle_contact = 0.0;
   c.tc = r.contact_time;
   c.ref.contact_time = r.contact_time;
+  c.ref.dissipated_energy = 0.5 * c.setup.m * (1.0 - r.restitution * r.restitution);
   return c;
 }
 
@@ -101,6 +104,7 @@ const double kFracs[] = {0.125, 0.375, 0.625, 0.875};
 template <class Law>
 void study(const Case<Law>& c0, int phases) {
   const double deg = 180.0 / M_PI;
+  const double k0 = 0.5 * c0.setup.m * c0.setup.speed * c0.setup.speed;
   std::vector<std::pair<ImpactScheme, bool>> runs;  // (scheme, grid correction)
   for (const ImpactScheme& s : all_impact_schemes()) runs.push_back({s, false});
   for (const ImpactScheme& s : all_impact_schemes())
@@ -110,7 +114,7 @@ void study(const Case<Law>& c0, int phases) {
     const std::string name = std::string(s.name()) + (run.second ? "+gc" : "");
     for (int N : kNs) {
       for (int grid = 0; grid < 2; ++grid) {
-        double acc[7] = {0, 0, 0, 0, 0, 0, 0};
+        double acc[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
         int n = 0;
         bool ok = true;
         for (double f : kFracs) {
@@ -119,11 +123,13 @@ void study(const Case<Law>& c0, int phases) {
           ImpactOptions o;
           o.dt = c.tc / (grid == 0 ? static_cast<double>(N) : N + f);
           o.grid_correction = run.second;
+          o.energy = !s.multi;
           const PhaseAverage pa = phase_averaged(c.law, c.cs, s, c.setup, o, phases, c.ref);
           if (pa.ended != phases) ok = false;
-          const double v[7] = {pa.e, pa.beta, pa.e_t, pa.omega, pa.rebound_angle_com * deg,
-                               pa.rebound_angle_contact * deg, pa.contact_time / c.tc};
-          for (int k = 0; k < 7; ++k) acc[k] += v[k];
+          const double v[9] = {pa.e, pa.beta, pa.e_t, pa.omega, pa.rebound_angle_com * deg,
+                               pa.rebound_angle_contact * deg, pa.contact_time / c.tc, pa.dissipated_energy / k0,
+                               pa.energy_residual / k0};
+          for (int k = 0; k < 9; ++k) acc[k] += v[k];
           ++n;
         }
         std::printf("%s,%s,%s,%d,%d,%d", c0.name.c_str(), name.c_str(), grid == 0 ? "integer" : "generic", N,
@@ -133,7 +139,13 @@ void study(const Case<Law>& c0, int phases) {
           if (ok && std::isfinite(v)) std::printf(",%.6e", v);
           else std::printf(",");
         }
-        std::printf(",%.10g,%.10g,%.10g\n", c0.ref.e, c0.ref.beta, c0.ref.rebound_angle_contact * deg);
+        std::printf(",%.10g,%.10g,%.10g", c0.ref.e, c0.ref.beta, c0.ref.rebound_angle_contact * deg);
+        for (int k = 7; k < 9; ++k) {  // the energy columns (issue 23) after the references
+          const double v = acc[k] / n;
+          if (ok && std::isfinite(v)) std::printf(",%.6e", v);
+          else std::printf(",");
+        }
+        std::printf("\n");
       }
     }
   }
@@ -156,7 +168,8 @@ int main(int argc, char** argv) {
                                 2.0 / 7.0 * kn, 0.092, 3.9, th));
   }
   std::printf("case,scheme,grid,N,evaluations_per_step,history_doubles,err_e,err_beta,err_et,err_spin,"
-              "err_rebound_com_deg,err_rebound_contact_deg,err_tc_rel,ref_e,ref_beta,ref_rebound_contact_deg\n");
+              "err_rebound_com_deg,err_rebound_contact_deg,err_tc_rel,ref_e,ref_beta,ref_rebound_contact_deg,"
+              "err_energy_rel,energy_residual_rel\n");
   for (const auto& c : cases) study(c, phases);
   study(make_hertz_case(), phases);
   return 0;
