@@ -525,7 +525,27 @@ j = collide(f"{BASE85} --angle 25 --tangential cundall_strack --mu 0.092 --kappa
 if j:
     check_abs("scheme gear5 oblique beta vs analytic", j["beta"], j["reference"]["beta"], 2e-3)
     check_abs("scheme gear5 oblique e vs analytic", j["e"], j["reference"]["e"], 1e-4)
+# --energy on (contact/energy.h): the parts' work adds up to the kinetic energy lost, the balance
+# closes to round-off (velocity Verlet), and at 2000 steps per contact the damper takes the closed
+# form 1/2 m v0^2 (1 - e^2) of variant A within the grid error; no tangential work head-on
+j = collide(f"{LSD52} --scheme velocity_verlet --steps 2000 --gap 1e-7 --energy on")
+if j:
+    en, k0 = j.get("energy", {}), 0.5 * 0.01
+    if not en:
+        failures.append("--energy on: no \"energy\" object")
+    else:
+        check_abs("energy: total taken vs kinetic lost", en["total"], en["kinetic_lost"], 1e-13 * k0)
+        check_abs("energy: balance residual", en["balance_residual_max"], 0.0, 1e-13 * k0)
+        check_abs("energy: damper vs closed form 1/2 m v0^2 (1 - e^2)", en["dissipated"]["normal_damping"],
+                  k0 * (1 - e52 * e52), 1e-3 * k0)
+        check_abs("energy: no tangential work head-on", en["dissipated"]["tangential"], 0.0, 0.0)
+j = collide(f"{LSD52} --scheme velocity_verlet --steps 200 --gap 1e-7")
+if j and "energy" in j:
+    failures.append("--energy off (default): an \"energy\" object is printed")
 for cmdline, option in (
+        (f"{LSD52} --scheme rk4 --energy on", "--energy on needs a one-evaluation scheme"),
+        (f"{LSD52} --energy on", "--energy needs --scheme"),
+        (f"{LSD52} --scheme velocity_verlet --energy yes", "--energy"),
         (f"{LSD52} --scheme rk5", "--scheme = 'rk5' is not one of: euler, symplectic_euler"),
         (f"{LSD52} --scheme heun --gap -1", "--gap = -1"),
         (f"{LSD52} --gap 0.1", "--gap needs --scheme"),
