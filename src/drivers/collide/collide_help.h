@@ -127,8 +127,10 @@ Integration and output:
                           contact force (contact/energy.h): "energy": the energy each part took
                           out of the motion (normal_elastic, normal_damping, tangential, rolling),
                           their total, the kinetic energy lost, and the balance
-                          K~ - K~(0) - W, K~ = K - h^2/8 (m|a|^2 + I|alpha|^2), which closes to
-                          round-off for the kick-drift-kick schemes (velocity_verlet*); default off
+                          K~ - K~(0) - W, which closes to round-off for the symplectic schemes:
+                          velocity_verlet* (K~ = K - h^2/8 (m|a|^2 + I|alpha|^2)), symplectic_euler,
+                          leapfrog, position_verlet (K~ = K + h/2 (m a.v + I alpha.w)); the others'
+                          residual is their energy error in that sense; default off
   --gap GAP               with --scheme: the start gap [m], >= 0 (default 0: touch at t = 0)
   --phases P              with --scheme: P runs with gap GAP + (i + 1/2)/P v_n0 dt, i = 0..P-1
                           (the contact start phase on the time grid); prints the means and, where

@@ -105,8 +105,8 @@ Run run(Args& a) {
     if (a.has("--energy")) {
       S.opt.energy = a.choice("--energy", {"off", "on"}) == "on";
       if (S.opt.energy && S.scheme.multi)
-        throw BadInput("option --energy on needs a one-evaluation scheme (the balance of a kick-drift-kick "
-                       "step); '" + name + "' evaluates the force " + std::to_string(S.scheme.evaluations()) +
+        throw BadInput("option --energy on needs a one-evaluation scheme (the work of the force applied "
+                       "once per step); '" + name + "' evaluates the force " + std::to_string(S.scheme.evaluations()) +
                        " times per step");
     }
     S.opt.dt = opt.dt;
