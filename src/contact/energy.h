@@ -129,5 +129,54 @@ TDEM_KERNEL void accumulate(Work<T>& acc, const Loads<T>& before, const Loads<T>
   for (int p = 0; p < kParts; ++p) acc.w[p] += step_work(before.part[p], after.part[p], d);
 }
 
+// The loads of a contact of two spheres (or a sphere and a wall, j) at one step in the compact form
+// a host keeps in the contact history between steps (kCompactSize doubles, in this order):
+//   n    unit normal from j to i;
+//   fe   the normal force's elastic part, fd the rest (on i along n);
+//   ft   the tangential force on i at the contact point (j gets -ft), which lies ci from x_i and cj
+//        from x_j along the normal: its torques are -ci n x ft on i and -cj n x ft on j;
+//   tr   a rolling-resistance torque on i (j gets -tr).
+template <class T>
+struct Compact {
+  T n[3] = {T(0), T(0), T(0)};
+  T fe = T(0), fd = T(0);
+  T ft[3] = {T(0), T(0), T(0)};
+  T ci = T(0), cj = T(0);
+  T tr[3] = {T(0), T(0), T(0)};
+};
+inline constexpr int kCompactSize = 14;
+
+template <class T>
+TDEM_KERNEL Loads<T> loads_of(const Compact<T>& c) noexcept {
+  Loads<T> l;
+  const T nxf[3] = {c.n[1] * c.ft[2] - c.n[2] * c.ft[1], c.n[2] * c.ft[0] - c.n[0] * c.ft[2],
+                    c.n[0] * c.ft[1] - c.n[1] * c.ft[0]};
+  for (int k = 0; k < 3; ++k) {
+    l.part[normal_elastic].f[k] = c.fe * c.n[k];
+    l.part[normal_damping].f[k] = c.fd * c.n[k];
+    l.part[tangential].f[k] = c.ft[k];
+    l.part[tangential].ti[k] = -c.ci * nxf[k];
+    l.part[tangential].tj[k] = -c.cj * nxf[k];
+    l.part[rolling].ti[k] = c.tr[k];
+    l.part[rolling].tj[k] = -c.tr[k];
+  }
+  return l;
+}
+
+// The motion of a pair over a step from the velocities of the step's drift (velocity Verlet: the
+// half-step velocities a host's pair style sees): h (v_i - v_j), h w_i, h w_j. A moving wall's
+// own displacement is the wall's work, not the contact's: pass the wall's velocity as v_j and
+// account F . h v_wall to the wall.
+template <class T>
+TDEM_KERNEL Motion<T> pair_motion(const T* vi, const T* vj, const T* wi, const T* wj, T h) noexcept {
+  Motion<T> d;
+  for (int k = 0; k < 3; ++k) {
+    d.dx[k] = h * (vi[k] - vj[k]);
+    d.dti[k] = h * wi[k];
+    d.dtj[k] = h * wj[k];
+  }
+  return d;
+}
+
 }  // namespace energy
 }  // namespace tdem

@@ -78,6 +78,70 @@ TEST(Energy, KickDriftKickIdentityOfOneStep) {
   EXPECT_GT(std::fabs(dk_plain - energy::step_work(l0, l1, d)), 1e-8);
 }
 
+// Two bodies and one contact in the compact form a host keeps: velocity Verlet steps under arbitrary
+// contact loads (normal parts, a tangential force with its lever arms, a rolling torque, a normal
+// that turns) change the bodies' K~ by exactly the trapezoid work of the parts over the pair's
+// motion: the signs of the torques and of the relative motion.
+TEST(Energy, CompactPairLoadsCloseTheBalanceOfTwoBodies) {
+  const double h = 1e-4, m[2] = {0.02, 0.05}, I[2] = {3e-7, 9e-7};
+  double v[2][3] = {{0.3, -0.2, 0.1}, {-0.1, 0.4, 0.0}}, w[2][3] = {{5.0, -2.0, 1.0}, {0.0, 3.0, -4.0}};
+  const energy::Form kdk = energy::Form::kick_drift_kick;
+  auto compact_at = [](int n) {  // arbitrary smooth loads at step n
+    energy::Compact<double> c;
+    const double a = 0.01 * n, s = 1.0 / std::sqrt(1.0 + a * a);
+    c.n[0] = s, c.n[1] = a * s;
+    c.fe = 3.0 + std::sin(0.1 * n), c.fd = -0.5 * std::cos(0.07 * n);
+    c.ft[0] = -0.4 * c.n[1], c.ft[1] = 0.4 * c.n[0], c.ft[2] = 0.2 * std::sin(0.05 * n);
+    c.ci = 0.004 - 1e-6 * n, c.cj = 0.006;
+    c.tr[0] = 1e-4, c.tr[2] = -2e-4 * std::cos(0.03 * n);
+    return c;
+  };
+  // the accelerations of both bodies, from the mechanics (not from loads_of): the force (fe + fd) n
+  // + ft on i and its opposite on j; torques r x F about each centre, the contact point at -ci n from
+  // x_i and at +cj n from x_j; the rolling torque tr on i and -tr on j
+  auto cross = [](const double* x, const double* y, double* z) {
+    z[0] = x[1] * y[2] - x[2] * y[1], z[1] = x[2] * y[0] - x[0] * y[2], z[2] = x[0] * y[1] - x[1] * y[0];
+  };
+  auto accel = [&](const energy::Compact<double>& c, double a[2][3], double al[2][3]) {
+    double f[3], fj[3], ri[3], rj[3], ti[3], tj[3];
+    for (int k = 0; k < 3; ++k) {
+      f[k] = (c.fe + c.fd) * c.n[k] + c.ft[k];
+      fj[k] = -c.ft[k];
+      ri[k] = -c.ci * c.n[k], rj[k] = c.cj * c.n[k];
+    }
+    cross(ri, c.ft, ti);
+    cross(rj, fj, tj);
+    for (int k = 0; k < 3; ++k)
+      a[0][k] = f[k] / m[0], a[1][k] = -f[k] / m[1], al[0][k] = (ti[k] + c.tr[k]) / I[0], al[1][k] = (tj[k] - c.tr[k]) / I[1];
+  };
+  double a[2][3], al[2][3];
+  energy::Compact<double> prev = compact_at(0);
+  accel(prev, a, al);
+  auto ktilde = [&]() {
+    return energy::kinetic(kdk, m[0], I[0], v[0], w[0], a[0], al[0], h) +
+           energy::kinetic(kdk, m[1], I[1], v[1], w[1], a[1], al[1], h);
+  };
+  const double k0 = ktilde();
+  energy::Work<double> acc;
+  double scale = 0.0;
+  for (int n = 1; n <= 200; ++n) {
+    for (int b = 0; b < 2; ++b)
+      for (int k = 0; k < 3; ++k) v[b][k] += 0.5 * h * a[b][k], w[b][k] += 0.5 * h * al[b][k];  // kick
+    const energy::Motion<double> d = energy::pair_motion(v[0], v[1], w[0], w[1], h);       // drift
+    const energy::Compact<double> now = compact_at(n);
+    accel(now, a, al);
+    for (int b = 0; b < 2; ++b)
+      for (int k = 0; k < 3; ++k) v[b][k] += 0.5 * h * a[b][k], w[b][k] += 0.5 * h * al[b][k];  // kick
+    energy::accumulate(acc, energy::loads_of(prev), energy::loads_of(now), d);
+    prev = now;
+    for (int p = 0; p < energy::kParts; ++p) scale = std::max(scale, std::fabs(acc.w[p]));
+  }
+  std::printf("two bodies: K~ change %.6e, work %.6e (parts %.3e %.3e %.3e %.3e)\n", ktilde() - k0, acc.total(),
+              acc.w[0], acc.w[1], acc.w[2], acc.w[3]);
+  EXPECT_NEAR(ktilde() - k0, acc.total(), 1e-12 * (k0 + scale));
+  for (int p = 0; p < energy::kParts; ++p) EXPECT_GT(std::fabs(acc.w[p]), 1e-9) << energy::part_names[p];
+}
+
 // Head-on LSD impact: the work taken out of the motion equals the kinetic energy lost to round-off
 // (velocity_verlet_ab2), the damper's share equals the closed form 1/2 m v0^2 (1 - e^2) up to the
 // grid error, and the spring returns what it took up to it. The correction (its extra force in the
