@@ -291,9 +291,10 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
                                         gc_prev.ft[2] * gc_prev.ft[2],
                                     law_prev.friction(), gc_prev.fn);
   };
-  // F = F_n n + F_t on the sphere as accelerations; torque -c n x F_t, n x F_t = (-F_t,y, F_t,x, 0)
+  // F = F_n n + F_t on the sphere and its torque -c n x F_t, n x F_t = (-F_t,y, F_t,x, 0); as
+  // accelerations (to_acceleration), and by part for the energy accounting (set_loads)
   energy::Loads<double> loads;  // of the last evaluation, by part (opt.energy)
-  auto load_of = [&](double fn, const double* ft, double xi) {  // F = F_n n + F_t, torque -c n x F_t
+  auto load_of = [&](double fn, const double* ft, double xi) {
     energy::Load<double> l;
     const double c = lever(xi);
     l.f[0] = ft[0], l.f[1] = ft[1], l.f[2] = fn + ft[2];
@@ -307,13 +308,8 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
     loads.part[energy::tangential] = load_of(0.0, ft, xi);
   };
   auto to_acceleration = [&](double fn, const double* ft, double xi, Acc& out) {
-    const double c = lever(xi);
-    out.a[0] = ft[0] / m;
-    out.a[1] = ft[1] / m;
-    out.a[2] = (fn + ft[2]) / m;
-    out.al[0] = c * ft[1] / I;
-    out.al[1] = -c * ft[0] / I;
-    out.al[2] = 0.0;
+    const energy::Load<double> l = load_of(fn, ft, xi);
+    for (int k = 0; k < 3; ++k) out.a[k] = l.f[k] / m, out.al[k] = l.ti[k] / I;
   };
   // (fe_out: the elastic part's share of fn_out, for the energy accounting: the power model's e-part,
   // linear in the parts; at a zero-force end in the proportion of the last step's parts)
@@ -429,7 +425,7 @@ ImpactResult integrate_impact(NormalLaw& normal, TangentialLaw& tang, const Impa
         gc_touch_time = (r.steps + 1) * h - tau;
         const double pq = grid::power_exponent(nr.force - nr.elastic, half.force - half.elastic, 0.0);
         fn_apply = grid::start_force(nr.elastic, pe, nr.force - nr.elastic, pq, tau, h);
-        fe_apply = grid::start_force(nr.elastic, pe, 0.0, pq, tau, h);  // (linear in the parts)
+        if (opt.energy) fe_apply = grid::start_force(nr.elastic, pe, 0.0, pq, tau, h);  // (linear in the parts)
         TangentialKin k0 = k;
         k0.overlap = 0.0;
         k0.fn = touch.force;

@@ -111,9 +111,6 @@ struct Work {
     for (int p = 0; p < kParts; ++p) s += w[p];
     return s;
   }
-  void add(const Work& o) noexcept {
-    for (int p = 0; p < kParts; ++p) w[p] += o.w[p];
-  }
 };
 
 // The loads of all parts of a contact at one step.
