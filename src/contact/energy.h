@@ -160,6 +160,38 @@ TDEM_KERNEL Loads<T> loads_of(const Compact<T>& c) noexcept {
   return l;
 }
 
+// The per-contact slots a host keeps in its contact history (kSlots doubles): the compact loads of
+// the last step (kCompactSize, in the order of Compact) and the accumulated work per part (kParts).
+inline constexpr int kSlots = kCompactSize + kParts;
+template <class T>
+TDEM_KERNEL void save(const Compact<T>& c, T* s) noexcept {
+  for (int k = 0; k < 3; ++k) s[k] = c.n[k], s[5 + k] = c.ft[k], s[10 + k] = c.tr[k];
+  s[3] = c.fe, s[4] = c.fd, s[8] = c.ci, s[9] = c.cj;
+}
+template <class T>
+TDEM_KERNEL Compact<T> restore(const T* s) noexcept {
+  Compact<T> c;
+  for (int k = 0; k < 3; ++k) c.n[k] = s[k], c.ft[k] = s[5 + k], c.tr[k] = s[10 + k];
+  c.fe = s[3], c.fd = s[4], c.ci = s[8], c.cj = s[9];
+  return c;
+}
+// The slots of the same contact seen from the other side (the pair j-i): the normal, the tangential
+// force and the rolling torque flip, the lever arms swap, the force parts and the work stay.
+template <class T>
+TDEM_KERNEL void reverse(const T* s, T* out) noexcept {
+  for (int k = 0; k < 3; ++k) out[k] = -s[k], out[5 + k] = -s[5 + k], out[10 + k] = -s[10 + k];
+  out[3] = s[3], out[4] = s[4], out[8] = s[9], out[9] = s[8];
+  for (int p = 0; p < kParts; ++p) out[kCompactSize + p] = s[kCompactSize + p];
+}
+// One step of a contact kept in slots s: the work of every part over the motion d from the saved
+// loads to `now`, then `now` saved. A contact's first step starts from zeroed slots (no load), its
+// last step (the first without contact) passes now = Compact{} (no load).
+template <class T>
+TDEM_KERNEL void step(T* s, const Compact<T>& now, const Motion<T>& d) noexcept {
+  const Loads<T> before = loads_of(restore(s)), after = loads_of(now);
+  for (int p = 0; p < kParts; ++p) s[kCompactSize + p] += step_work(before.part[p], after.part[p], d);
+  save(now, s);
+}
 // The motion of a pair over a step from the velocities of the step's drift (velocity Verlet: the
 // half-step velocities a host's pair style sees): h (v_i - v_j), h w_i, h w_j. A moving wall's
 // own displacement is the wall's work, not the contact's: pass the wall's velocity as v_j and

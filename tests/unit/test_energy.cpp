@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 
 #include "collision/analytic.h"
 #include "collision/integrate_impact.h"
@@ -140,6 +142,62 @@ TEST(Energy, CompactPairLoadsCloseTheBalanceOfTwoBodies) {
               acc.w[0], acc.w[1], acc.w[2], acc.w[3]);
   EXPECT_NEAR(ktilde() - k0, acc.total(), 1e-12 * (k0 + scale));
   for (int p = 0; p < energy::kParts; ++p) EXPECT_GT(std::fabs(acc.w[p]), 1e-9) << energy::part_names[p];
+}
+
+// The host slots (save, restore, reverse, step): the same contact kept from either side takes the
+// same work. Steps of a contact from side i-j, and of its mirror j-i (slots reversed, the motion
+// seen from j: -dx, the rotations swapped), accumulate the same work per part; the slots survive a
+// reversal in the middle (a host's history transfer) and the ended step adds the last half step.
+TEST(Energy, HostSlotsAreTheSameFromEitherSide) {
+  auto compact_at = [](int n) {
+    energy::Compact<double> c;
+    const double a = 0.02 * n, s = 1.0 / std::sqrt(1.0 + a * a);
+    c.n[0] = s, c.n[2] = a * s;
+    c.fe = 2.0 + std::sin(0.2 * n), c.fd = 0.3 * std::cos(0.1 * n);
+    c.ft[1] = 0.5 + 0.1 * n, c.ft[2] = -0.2;
+    c.ci = 0.003, c.cj = 0.007;
+    c.tr[0] = 2e-4 * n, c.tr[1] = -1e-4;
+    return c;
+  };
+  auto mirror = [](const energy::Compact<double>& c) {  // the contact as the pair j-i
+    double s[energy::kSlots] = {}, r[energy::kSlots];
+    energy::save(c, s);
+    energy::reverse(s, r);
+    return energy::restore(r);
+  };
+  auto motion_at = [](int n, bool from_j) {
+    const double vi[3] = {0.1 * n, -0.3, 0.2}, vj[3] = {-0.2, 0.05 * n, 0.0};
+    const double wi[3] = {1.0, 2.0, -0.5 * n}, wj[3] = {0.0, -3.0, 0.7};
+    return from_j ? energy::pair_motion(vj, vi, wj, wi, 1e-3) : energy::pair_motion(vi, vj, wi, wj, 1e-3);
+  };
+  double a[energy::kSlots] = {}, b[energy::kSlots] = {}, c[energy::kSlots] = {};
+  for (int n = 1; n <= 12; ++n) {
+    const energy::Compact<double> now = compact_at(n);
+    energy::step(a, now, motion_at(n, false));   // always from i
+    energy::step(b, mirror(now), motion_at(n, true));  // always from j
+    if (n == 6) {  // c: from i, then handed over to j (the host's transfer of the history)
+      double t[energy::kSlots];
+      energy::reverse(c, t);
+      std::copy(t, t + energy::kSlots, c);
+    }
+    energy::step(c, n < 6 ? now : mirror(now), motion_at(n, n >= 6));
+  }
+  energy::step(a, energy::Compact<double>{}, motion_at(13, false));  // the first step without contact
+  energy::step(b, energy::Compact<double>{}, motion_at(13, true));
+  energy::step(c, energy::Compact<double>{}, motion_at(13, true));
+  for (int p = 0; p < energy::kParts; ++p) {
+    const double w = a[energy::kCompactSize + p];
+    EXPECT_GT(std::fabs(w), 1e-9) << energy::part_names[p];
+    EXPECT_NEAR(b[energy::kCompactSize + p], w, 1e-15) << energy::part_names[p];
+    EXPECT_NEAR(c[energy::kCompactSize + p], w, 1e-15) << energy::part_names[p];
+  }
+  // the ended step leaves no load behind, and restore(save(x)) is x
+  for (int k = 0; k < energy::kCompactSize; ++k) EXPECT_EQ(a[k], 0.0);
+  double s[energy::kSlots];
+  const energy::Compact<double> x = compact_at(3);
+  energy::save(x, s);
+  const energy::Compact<double> y = energy::restore(s);
+  EXPECT_EQ(std::memcmp(&x, &y, sizeof x), 0);
 }
 
 // Head-on LSD impact: the work taken out of the motion equals the kinetic energy lost to round-off
