@@ -14,9 +14,12 @@
 # after the run is printed too (for the chute it must be the same for both styles).
 #
 # With TDEM_CG_COMPARE=grid_correction the two runs per scene are tdem/gran with `grid_correction
-# off` and `on` (issue 22: the correction's cost in the pair loop) instead of stock and tdem.
+# off` and `on` (issue 22: the correction's cost in the pair loop) instead of stock and tdem; with
+# TDEM_CG_COMPARE=energy `pair_style tdem/gran` and `pair_style tdem/gran energy yes` (issue 23);
+# with TDEM_CG_COMPARE=base tdem/gran of another build's tdem-lammps (TDEM_CG_BASE_EXE, e.g. the
+# commit before a change) and of this build: a change that should leave the loop alone.
 #
-# usage: [TDEM_CG_COMPARE=stock|grid_correction] bench/lammps/callgrind_pair.sh [BUILD_DIR]
+# usage: [TDEM_CG_COMPARE=stock|grid_correction|energy|base] bench/lammps/callgrind_pair.sh [BUILD_DIR]
 #        [CHUTE_STEPS] [BED_STEPS] [NATOMS]   (defaults: build, 200, 100, 100000; about 3 minutes)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
@@ -44,8 +47,10 @@ KT=$(/usr/bin/python3 -c 'print(repr(200000.0 * 2.0 / 7.0))')
 GKK=$(/usr/bin/python3 -c 'print(repr(3.141592653589793 / 12.0 * 50.0 * 0.5))')
 
 compare=${TDEM_CG_COMPARE:-stock}
-case $compare in stock) runs="stock tdem" ;; grid_correction) runs="tdem tdem_gc" ;;
-  *) echo "TDEM_CG_COMPARE=$compare: allowed stock, grid_correction" >&2; exit 2 ;; esac
+case $compare in stock) runs="stock tdem" ;; grid_correction) runs="tdem tdem_gc" ;; energy) runs="tdem tdem_energy" ;;
+  base) runs="tdem_base tdem"
+        [ -x "${TDEM_CG_BASE_EXE:-}" ] || { echo "TDEM_CG_COMPARE=base needs TDEM_CG_BASE_EXE (a tdem-lammps)" >&2; exit 2; } ;;
+  *) echo "TDEM_CG_COMPARE=$compare: allowed stock, grid_correction, energy, base" >&2; exit 2 ;; esac
 
 scene() {  # $1 = chute|bed, $2 = stock|tdem|tdem_gc, $3 = steps
   local data grav procs="" inter
@@ -54,11 +59,13 @@ scene() {  # $1 = chute|bed, $2 = stock|tdem|tdem_gc, $3 = steps
     if [ "$2" = stock ]; then inter=$'pair_style gran/hooke/history 200000.0 NULL 50.0 NULL 0.5 0\npair_coeff * *'
     else inter=$'pair_style tdem/gran\npair_coeff * * normal lsd stiffness 200000.0 50.0 tangential cundall_strack '"$KT"' 0.0 0.5'; fi
     [ "$2" = tdem_gc ] && inter="$inter grid_correction on"
+    [ "$2" = tdem_energy ] && inter=${inter/pair_style tdem\/gran/pair_style tdem\/gran energy yes}
   else
     data=bed.data; grav="fix 1 all gravity 1.0 vector 0.0 0.0 -1.0"; procs="processors * * 1"
     if [ "$2" = stock ]; then inter=$'pair_style gran/hertz/history 200000.0 NULL 50.0 NULL 0.5 0\npair_coeff * *'
     else inter=$'pair_style tdem/gran\npair_coeff * * normal hertz 3e5 0 damping kuwabara_kono '"$GKK"' tangential cundall_strack 0.8 0.5'; fi
     [ "$2" = tdem_gc ] && inter="$inter grid_correction on"
+    [ "$2" = tdem_energy ] && inter=${inter/pair_style tdem\/gran/pair_style tdem\/gran energy yes}
   fi
   cat <<EOS
 units lj
@@ -102,7 +109,8 @@ for sc in chute bed; do
   for st in $runs; do
     tag=$sc.$st
     scene $sc $st $steps > "$work/in.$tag"
-    (cd "$work" && valgrind --tool=callgrind --callgrind-out-file="cg.$tag" "$exe" -in "in.$tag" \
+    run_exe=$exe; [ $st = tdem_base ] && run_exe=$TDEM_CG_BASE_EXE
+    (cd "$work" && valgrind --tool=callgrind --callgrind-out-file="cg.$tag" "$run_exe" -in "in.$tag" \
        -log "log.$tag" -echo none -screen none > "vg.$tag" 2>&1)
     total=$(awk '/Collected/ {print $4}' "$work/vg.$tag")
     pair=$(callgrind_annotate --inclusive=yes "$work/cg.$tag" 2>/dev/null |
@@ -114,6 +122,8 @@ for sc in chute bed; do
     name="gran/hooke/history"; [ $sc = bed ] && name="gran/hertz/history"
     [ $st != stock ] && { name="tdem/gran lsd + cundall_strack"; [ $sc = bed ] && name="tdem/gran hertz kuwabara_kono + cundall_strack"; }
     [ $st = tdem_gc ] && name="$name, grid_correction on"
+    [ $st = tdem_energy ] && name="$name, energy yes"
+    [ $st = tdem_base ] && name="$name (base build)"
     echo "| $sc | $steps | \`$name\` | $total | $pair | $ratio | $thermo |"
     progress_done "$tag" >&2  # stderr: stdout is the table
   done

@@ -27,6 +27,7 @@
 
 #include "atom.h"
 #include "comm.h"
+#include "compute.h"
 #include "domain.h"
 #include "exceptions.h"
 #include "fix.h"
@@ -149,6 +150,28 @@ inline void forward_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix, int size = 
   comm->forward_comm(fix, size);
 #else
   comm->forward_comm_fix(fix, size);
+#endif
+}
+
+// reverse communication of a fix's per-atom data of the ghost atoms to their owners
+// (pack/unpack_reverse_comm), size values per atom at most (0: the fix's comm_reverse)
+inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Fix *fix, int size = 0)
+{
+#if defined(TDEM_LMP_COMM_OVERLOADS)
+  comm->reverse_comm(fix, size);
+#else
+  comm->reverse_comm_fix(fix, size);
+#endif
+}
+
+// the same for a compute's per-atom data
+inline void reverse_comm(LAMMPS_NS::Comm *comm, LAMMPS_NS::Compute *compute, int size = 0)
+{
+#if defined(TDEM_LMP_COMM_OVERLOADS)
+  comm->reverse_comm(compute, size);
+#else
+  static_cast<void>(size);
+  comm->reverse_comm_compute(compute);
 #endif
 }
 

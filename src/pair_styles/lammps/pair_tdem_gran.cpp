@@ -16,6 +16,9 @@
 #include "pair_tdem_gran.h"
 
 #include "grid_host.h"
+#include "fix_tdem_energy_store.h"
+
+#include "contact/energy.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -60,6 +63,8 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   utlaw = 0;
   one_law = false;
   gc_any = false;
+  energy_on = 0;
+  estore = nullptr;
   atom_ntypes = 0;
   dt = 0.0;
   freeze_group_bit = 0;
@@ -70,6 +75,7 @@ PairTDEMGran::PairTDEMGran(LAMMPS *lmp) : Pair(lmp)
   fix_history = nullptr;
   id_dummy = "NEIGH_HISTORY_TDEM_DUMMY" + std::to_string(instance_me);
   id_history = "NEIGH_HISTORY_TDEM" + std::to_string(instance_me);
+  id_estore = "TDEM_ENERGY_STORE" + std::to_string(instance_me);
   modify->add_fix(id_dummy + " all DUMMY");
 }
 
@@ -83,6 +89,7 @@ PairTDEMGran::~PairTDEMGran()
     modify->delete_fix(id_dummy);
   else
     modify->delete_fix(id_history);
+  if (estore) modify->delete_fix(id_estore);
 
   if (allocated) {
     memory->destroy(setflag);
@@ -138,6 +145,12 @@ struct PairRunnerCorrected {
   int eflag, vflag;
   template <int M, int E, int S, int TL = 0> void run() { p->template eval<-1, -1, -1, TL, 0, -1, 1>(eflag, vflag); }
 };
+// the energy accounting (energy yes): the law at run time, the tangential law at compile time
+struct PairRunnerEnergy {
+  PairTDEMGran *p;
+  int eflag, vflag;
+  template <int M, int E, int S, int TL = 0> void run() { p->template eval<-1, -1, -1, TL, 0, -1, 2>(eflag, vflag); }
+};
 }  // namespace
 
 void PairTDEMGran::compute(int eflag, int vflag)
@@ -148,6 +161,16 @@ void PairTDEMGran::compute(int eflag, int vflag)
   if (rigid.fix && neighbor->ago == 0) {
     rigid.refresh(atom, memory, "pair:mass_rigid");
     tdem_lammps::compat::forward_comm(comm, this);
+  }
+
+  // the energy accounting: a separate instantiation; the ended contacts' halves of ghost atoms go
+  // to their owners after the loop
+  if (energy_on) {
+    estore->clear_ghosts();
+    tdem_lammps::dispatch(false, umode, uend, uslip, utlaw, PairRunnerEnergy{this, eflag, vflag});
+    estore->fold();
+    if (vflag_fdotr) virial_fdotr_compute();
+    return;
   }
 
   // the multiple-contact correction of fix tdem/clump: a separate instantiation
@@ -213,7 +236,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   int **firsttouch = fix_history->firstflag;
   double **firstshear = fix_history->firstvalue;
 
-  // C: the multiple-contact correction. Sides of a contact: the body index of a clump sphere,
+  // C = 1: the multiple-contact correction. Sides of a contact: the body index of a clump sphere,
   // -(tag + 1) of a free sphere. count / overlap: every touching contact with a clump on at least
   // one side is tallied first (same loop order as the force pass below, k-th contact = k-th add)
   [[maybe_unused]] tdem_lammps::ClumpView cv;
@@ -221,7 +244,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
   [[maybe_unused]] const tdem::clumps::Correction cmode = clump.correction();
   [[maybe_unused]] const bool share = clump.shares();
   [[maybe_unused]] tagint *tag = atom->tag;
-  if constexpr (C != 0) {
+  if constexpr (C == 1) {
     cv.fetch(clump.fix, cmode == tdem::clumps::Correction::local_mass);
     if (share) {
       clump.tally.clear();
@@ -290,6 +313,9 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
 
       // most neighbours do not touch (the list holds the skin too): tell the register allocator
       if (__builtin_expect(rsq >= radsum * radsum, 1)) {
+        if constexpr (C == 2) {  // energy: the contact's last half step, its work to its atoms
+          if (touch[jj]) energy_end(i, j, shear + hsize - tdem::energy::kSlots, shearupdate);
+        }
         if constexpr (M < 0 || G) {
           // grid_correction: the first step after a corrected contact gets the end's impulse;
           // the whole block (with the correction's values) is forgotten
@@ -349,8 +375,8 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       double meff = mi * mj / (mi + mj);
       if (mask[i] & freeze_group_bit) meff = mj;
       if (mask[j] & freeze_group_bit) meff = mi;
-      [[maybe_unused]] const bool clump_contact = C != 0 && (cv.body[i] >= 0 || cv.body[j] >= 0);
-      if constexpr (C != 0) {
+      [[maybe_unused]] const bool clump_contact = C == 1 && (cv.body[i] >= 0 || cv.body[j] >= 0);
+      if constexpr (C == 1) {
         if (clump_contact && cmode == tdem::clumps::Correction::local_mass) {
           // locally reduced mass: inverse masses of the two sides at the contact point (middle
           // of the overlap on the line of centres); a free sphere 1/m, a frozen one 0
@@ -379,6 +405,7 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
       touch[jj] = 1;
       const LawCoeffs &lawij = ONE != 0 ? law1 : lawrow[type[j]];
       double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
+      [[maybe_unused]] tdem::NormalResult<double> nres{};
       bool corrected = false;
       if constexpr (M < 0 || G) {
         // the time-grid correction (grid_host.h): a contact's first step and the watched clip of
@@ -401,8 +428,9 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         tdem_lammps::evaluate_contact<M, E, S, TL, D>(lawij, meff, delx, dely,
                                                       delz, r, rinv, rsqinv, radsum - r, vr1, vr2,
                                                       vr3, wr1, wr2, wr3, dt, shearupdate, shear,
-                                                      ccel, fs, radi, radj, omega[i], omega[j], troll);
-      if constexpr (C != 0) {
+                                                      ccel, fs, radi, radj, omega[i], omega[j], troll,
+                                                      C == 2 ? &nres : nullptr);
+      if constexpr (C == 1) {
         // count / overlap: the whole contact force (normal and tangential) times s; the stored
         // tangential history is the law's own
         if (clump_contact && share) {
@@ -412,6 +440,23 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
           fs[1] *= sc;
           fs[2] *= sc;
         }
+      }
+
+      if constexpr (C == 2) {
+        // energy: the loads of this step in their parts; the step's work from the last step's
+        // loads over the pair's motion (the half-step velocities of the drift); at set-up the
+        // loads only (the integrator's first kick uses them)
+        tdem::energy::Compact<double> now;
+        now.n[0] = delx * rinv, now.n[1] = dely * rinv, now.n[2] = delz * rinv;
+        now.fe = nres.elastic;
+        now.fd = ccel * r - nres.elastic;
+        now.ci = radi, now.cj = radj;
+        for (int k = 0; k < 3; k++) now.ft[k] = fs[k], now.tr[k] = lawij.roll ? troll[k] : 0.0;
+        double *es = shear + hsize - tdem::energy::kSlots;
+        if (shearupdate)
+          tdem::energy::step(es, now, tdem::energy::pair_motion(v[i], v[j], omega[i], omega[j], dt));
+        else
+          tdem::energy::save(now, es);
       }
 
       // forces and torques
@@ -480,76 +525,6 @@ __attribute__((noinline)) void PairTDEMGran::gc_deferred(const int *defer, int n
     tdem_lammps::gc_contact<M, E, S, TL, D>(c, shear, hsize, ccel, fs, troll);
     gc_add_force(i, j, c, ccel, fs, troll);
   }
-}
-
-/* ---------------------------------------------------------------------- */
-
-// The contact of pair (i, j) as the correction takes it (the geometry, the effective mass and the
-// relative velocities of the loop of eval).
-tdem_lammps::GcContact PairTDEMGran::gc_pair_contact(int i, int j, const LawCoeffs &lw)
-{
-  double **x = atom->x, **v = atom->v, **omega = atom->omega;
-  const double delx = x[i][0] - x[j][0], dely = x[i][1] - x[j][1], delz = x[i][2] - x[j][2];
-  const double rsq = delx * delx + dely * dely + delz * delz;
-  const double r = sqrt(rsq), rinv = 1.0 / r;
-  const double radi = atom->radius[i], radj = atom->radius[j];
-  const double mi = rigid.of(i, atom->rmass[i]), mj = rigid.of(j, atom->rmass[j]);
-  double meff = mi * mj / (mi + mj);
-  if (atom->mask[i] & freeze_group_bit) meff = mj;
-  if (atom->mask[j] & freeze_group_bit) meff = mi;
-  return {&lw, meff, delx, dely, delz, r, rinv, 1.0 / rsq, radi + radj - r,
-          {v[i][0] - v[j][0], v[i][1] - v[j][1], v[i][2] - v[j][2]},
-          {(radi * omega[i][0] + radj * omega[j][0]) * rinv, (radi * omega[i][1] + radj * omega[j][1]) * rinv,
-           (radi * omega[i][2] + radj * omega[j][2]) * rinv},
-          dt, radi, radj, omega[i], omega[j]};
-}
-
-// Force ccel del + fs and its torques (+ the rolling torque troll) on i and, with newton or an
-// owned j, the opposite on j, as the loop of eval adds them.
-void PairTDEMGran::gc_add_force(int i, int j, const tdem_lammps::GcContact &c, double ccel, const double *fs,
-                                const double *troll)
-{
-  double **f = atom->f, **torque = atom->torque;
-  const int nlocal = atom->nlocal, newton_pair = force->newton_pair;
-  const double fx = c.delx * ccel + fs[0], fy = c.dely * ccel + fs[1], fz = c.delz * ccel + fs[2];
-  const double tor1 = c.rinv * (c.dely * fs[2] - c.delz * fs[1]);
-  const double tor2 = c.rinv * (c.delz * fs[0] - c.delx * fs[2]);
-  const double tor3 = c.rinv * (c.delx * fs[1] - c.dely * fs[0]);
-  f[i][0] += fx;
-  f[i][1] += fy;
-  f[i][2] += fz;
-  torque[i][0] += -c.radi * tor1 + troll[0];
-  torque[i][1] += -c.radi * tor2 + troll[1];
-  torque[i][2] += -c.radi * tor3 + troll[2];
-  if (newton_pair || j < nlocal) {
-    f[j][0] -= fx;
-    f[j][1] -= fy;
-    f[j][2] -= fz;
-    torque[j][0] -= c.radj * tor1 + troll[0];
-    torque[j][1] -= c.radj * tor2 + troll[1];
-    torque[j][2] -= c.radj * tor3 + troll[2];
-  }
-  if (evflag) ev_tally_xyz(i, j, nlocal, newton_pair, 0.0, 0.0, fx, fy, fz, c.delx, c.dely, c.delz);
-}
-
-// history of j-i from that of i-j: the tangential spring flips sign, the normal-law slots
-// (xi_max of walton_braun) and the time-grid correction's flags do not. Used by FixNeighHistory
-// when nondefault_history_transfer.
-void PairTDEMGran::transfer_history(TDEM_LMP_TRANSFER_HISTORY_PARAMS(source, target))
-{
-  // the tangential block: vectors flip (kernel HistorySlot::flips_sign), scalars do not
-  const int nt = tdem_lammps::tangential_history_size(utlaw);
-  for (int m = 0; m < nt && m < size_history; m++)
-    target[m] = tdem_lammps::tangential_slot_flips(utlaw, m) ? -source[m] : source[m];
-  for (int m = nt; m < size_history; m++) target[m] = source[m];
-}
-
-void PairTDEMGran::coincident_centres(int i, int j) {
-  error->one(FLERR, "pair tdem/gran: atoms " + std::to_string(static_cast<long long>(atom->tag[i])) + " and " +
-                        std::to_string(static_cast<long long>(atom->tag[j])) +
-                        " have coincident centres (distance 0) at step " +
-                        std::to_string(static_cast<long long>(update->ntimestep)) +
-                        ": the contact normal is undefined; place the particles apart (e.g. delete_atoms overlap)");
 }
 
 void PairTDEMGran::reset_dt()

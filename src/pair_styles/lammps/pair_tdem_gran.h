@@ -2,7 +2,7 @@
 // tdem for LAMMPS: pair style tdem/gran, the linear spring-dashpot normal law (tdem::lsd) with
 // the Cundall-Strack tangential law (tdem::cundall_strack), per type pair.
 //
-//   pair_style tdem/gran
+//   pair_style tdem/gran [energy no|yes]
 //   pair_coeff I J normal lsd stiffness KN GAMMAN tangential cundall_strack KT GAMMAT MU [options]
 //   pair_coeff I J normal lsd restitution E TC tangential cundall_strack KAPPA MU [options]
 //   pair_coeff I J normal hertz E NU [E2 NU2] [damping linear G|kuwabara_kono G|tsuji E|general TH C]
@@ -15,6 +15,8 @@
 //   pair_coeff I J normal extended_hertz E NU [E2 NU2] e_fit FORM C0 [C1 [C2]] [v_min V] [v_max V]
 //                  tangential cundall_strack KAPPA MU [options]
 //   options: damping mass|absolute (lsd stiffness), limit_force no|yes, slip spring_dashpot|spring
+//   energy yes: every contact accounts the work of its force parts (src/contact/energy.h) for
+//   compute tdem/energy; a separate instantiation of the contact loop (energy no pays nothing)
 //
 // Derives from Pair and uses only FixNeighHistory and NeighRequest (not the GRANULAR classes),
 // so the two files can be dropped into a LAMMPS src/ tree together with tdem_lammps_law.*,
@@ -36,6 +38,8 @@ PairStyle(tdem/gran,PairTDEMGran);
 
 #include "clump_correction_host.h"
 #include "grid_host.h"
+
+#include "contact/energy.h"
 
 #include <vector>
 
@@ -63,7 +67,8 @@ class PairTDEMGran : public Pair {
   // evaluation body, instantiated per (mode, end, slip, tangential law) and ONE = 1 when every
   // type pair has the same coefficients (no per-type lookups); public for the dispatcher
   // (normal hertz with ONE: also the damping member D fixed); C = 1: the multiple-contact
-  // correction of fix tdem/clump (its own instantiations, run-time law; C = 0 is the plain loop)
+  // correction of fix tdem/clump (its own instantiations, run-time law; C = 0 is the plain loop);
+  // C = 2: the energy accounting (energy yes; run-time law)
   template <int M, int E, int S, int TL, int ONE = 0, int D = -1, int C = 0> void eval(int eflag, int vflag);
 
   // read-only view for other tdem styles (fix tdem/timestep): the law of type pair (i, j),
@@ -71,6 +76,18 @@ class PairTDEMGran : public Pair {
   // tangential law (TangentialLaw) of all type pairs
   const tdem_lammps::LawCoeffs &law_of(int i, int j) const { return law[i * (atom_ntypes + 1) + j]; }
   int tangential_law() const { return utlaw; }
+
+  // energy yes: the energy the contacts took out of the motion per part (tdem::energy::Part) [J],
+  // this rank's share: the ended contacts of its atoms and its share of the current ones (half of
+  // a contact with a ghost partner when newton_pair is off). peratom (optional, rows of the
+  // owned and ghost atoms, zeroed by the caller): half of every contact to each of its atoms; with
+  // newton_pair on the caller folds the ghost rows into their owners.
+  bool energy_enabled() const { return energy_on != 0; }
+  void energy_sums(double *sums, double **peratom);
+  // the current contacts of this rank, one row of kLocalColumns each (a contact with a ghost
+  // partner on one rank only): the two atom IDs, the energy taken per part, their sum
+  static constexpr int kLocalColumns = 2 + tdem::energy::kParts + 1;
+  void energy_local(std::vector<double> &rows);
 
  protected:
   // error->one naming two atoms whose centres coincide (no contact normal); out of line and cold
@@ -106,6 +123,12 @@ class PairTDEMGran : public Pair {
   tdem_lammps::ClumpCorrection clump;
 
   void allocate();
+  // energy yes: the per-atom store of the ended contacts' energy (fix TDEM/ENERGY/STORE)
+  int energy_on;
+  class FixTDEMEnergyStore *estore;
+  std::string id_estore;
+  void energy_end(int i, int j, double *slots, bool update);
+
   tdem_lammps::GcContact gc_pair_contact(int i, int j, const tdem_lammps::LawCoeffs &lw);
   void gc_add_force(int i, int j, const tdem_lammps::GcContact &c, double ccel, const double *fs,
                     const double *troll);

@@ -5,6 +5,10 @@
 
 #include "pair_tdem_gran.h"
 
+#include "fix_tdem_energy_store.h"
+
+#include "contact/energy.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -49,11 +53,24 @@ void PairTDEMGran::allocate()
 
 void PairTDEMGran::settings(int narg, char **arg)
 {
-  if (narg != 0)
-    error->all(FLERR,
-               std::string("pair_style tdem/gran takes no arguments (the law goes into "
-                           "pair_coeff), got '") +
-                   arg[0] + "' and " + std::to_string(narg - 1) + " more");
+  // pair_style tdem/gran [energy no|yes]; the law goes into pair_coeff
+  int on = 0;
+  for (int a = 0; a < narg; a += 2) {
+    if (std::strcmp(arg[a], "energy") != 0)
+      error->all(FLERR, std::string("pair_style tdem/gran: unknown keyword '") + arg[a] +
+                            "' (it takes only 'energy no|yes'; the law goes into pair_coeff)");
+    if (a + 1 >= narg) error->all(FLERR, "pair_style tdem/gran: energy needs a value, no or yes");
+    if (std::strcmp(arg[a + 1], "yes") == 0)
+      on = 1;
+    else if (std::strcmp(arg[a + 1], "no") == 0)
+      on = 0;
+    else
+      error->all(FLERR, std::string("pair_style tdem/gran: energy takes no or yes, got '") + arg[a + 1] + "'");
+  }
+  if (fix_history && on != energy_on)
+    error->all(FLERR, "pair_style tdem/gran: energy cannot be switched after a run (the contacts' "
+                      "history has another size); use clear, or set it from the start");
+  energy_on = on;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -120,6 +137,8 @@ void PairTDEMGran::init_style()
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j])
         need_history = MAX(need_history, tdem_lammps::law_history_size(coeffs(i, j), utlaw));
+  // energy yes: the accounting's slots end every contact's history (after the correction's)
+  if (energy_on) need_history += tdem::energy::kSlots;
   if (fix_history == nullptr && restart_history_size > 0 && need_history != restart_history_size)
     error->all(FLERR,
                "pair tdem/gran: the contacts of the restart file have " + std::to_string(restart_history_size) +
@@ -148,9 +167,16 @@ void PairTDEMGran::init_style()
   // are read whatever their sign: LAMMPS's default, which negates all, keeps them)
   nondefault_history_transfer =
       (size_history - (gc_any ? tdem::grid::history_size : 0) > tdem_lammps::TANGENTIAL_HISTORY ||
-       utlaw != tdem_lammps::TLAW_CUNDALL_STRACK)
+       utlaw != tdem_lammps::TLAW_CUNDALL_STRACK || energy_on)
           ? 1
           : 0;
+  // energy yes: a contact that ends at a step that rebuilds the neighbour list keeps its history
+  // (FixNeighHistory drops the history of pairs apart at the rebuild unless beyond_contact), so
+  // that its last half step and its work reach the store
+  beyond_contact = energy_on ? 1 : 0;
+  if (energy_on && gc_any)
+    error->all(FLERR, "pair tdem/gran: energy yes with grid_correction on is not supported in LAMMPS yet "
+                      "(tdem-collide --energy on accounts the correction's force); turn one of them off");
 
   // on first init replace the placeholder with the FixNeighHistory that stores the history.
   // A restart file from another LAMMPS generation may store the history partners' IDs in the
@@ -214,6 +240,15 @@ void PairTDEMGran::init_style()
   double dmax = 0.0;
   for (int i = 1; i <= atom->ntypes; i++) dmax = MAX(dmax, 2.0 * MAX(maxrad_dynamic[i], maxrad_frozen[i]));
   clump.find(lmp, "pair tdem/gran", dmax);
+  if (energy_on && clump.mode != 0)
+    error->all(FLERR, "pair tdem/gran: energy yes with the multiple-contact correction of fix tdem/clump "
+                      "is not supported yet; use correction none, or energy no");
+
+  // energy yes: the per-atom store of the ended contacts' energy (restart: the same ID picks up
+  // the values of the restart file)
+  if (energy_on && !estore) {
+    estore = (FixTDEMEnergyStore *) modify->add_fix(id_estore + " all TDEM/ENERGY/STORE", 1);
+  }
 
   const int ifix = modify->find_fix(id_history);
   if (ifix < 0) error->all(FLERR, "pair tdem/gran: could not find its fix " + id_history);
@@ -397,10 +432,11 @@ static constexpr int RESTART_NAME = 32;
 
 void PairTDEMGran::write_restart(FILE *fp)
 {
-  const int version = 8;
+  const int version = 9;
   fwrite(&version, sizeof(int), 1, fp);
   const int tags = (int) tdem_lammps::compat::history_tags();
   fwrite(&tags, sizeof(int), 1, fp);
+  fwrite(&energy_on, sizeof(int), 1, fp);
   for (int i = 1; i <= atom->ntypes; i++)
     for (int j = i; j <= atom->ntypes; j++) {
       fwrite(&setflag[i][j], sizeof(int), 1, fp);
@@ -419,15 +455,20 @@ void PairTDEMGran::read_restart(FILE *fp)
   int version = 0;
   if (me == 0) utils::sfread(FLERR, &version, sizeof(int), 1, fp, nullptr, error);
   MPI_Bcast(&version, 1, MPI_INT, 0, world);
-  if (version < 2 || version > 8)
+  if (version < 2 || version > 9)
     error->all(FLERR, "pair tdem/gran: restart data of version " + std::to_string(version) +
-                          " cannot be read (this build reads versions 2 to 8)");
+                          " cannot be read (this build reads versions 2 to 9)");
   int tags = (int) tdem_lammps::compat::HistoryTags::value;  // versions 2-4: LAMMPS 2022
   if (version >= 5) {
     if (me == 0) utils::sfread(FLERR, &tags, sizeof(int), 1, fp, nullptr, error);
     MPI_Bcast(&tags, 1, MPI_INT, 0, world);
   }
   restart_history_tags = tags;
+  energy_on = 0;  // version 9: pair_style tdem/gran energy
+  if (version >= 9) {
+    if (me == 0) utils::sfread(FLERR, &energy_on, sizeof(int), 1, fp, nullptr, error);
+    MPI_Bcast(&energy_on, 1, MPI_INT, 0, world);
+  }
   restart_history_size = 0;  // set below from the laws read
   const size_t nbytes = version >= 8   ? sizeof(LawCoeffs)
                         : version == 7 ? tdem_lammps::LAW_COEFFS_V7_SIZE
@@ -475,4 +516,5 @@ void PairTDEMGran::read_restart(FILE *fp)
     for (int j = i; j <= atom->ntypes; j++)
       if (setflag[i][j])
         restart_history_size = MAX(restart_history_size, tdem_lammps::law_history_size(coeffs(i, j), tl));
+  if (energy_on) restart_history_size += tdem::energy::kSlots;
 }

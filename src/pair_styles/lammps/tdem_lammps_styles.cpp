@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-2.0-or-later
 #include "tdem_lammps_styles.h"
 
+#include "compute_tdem_energy.h"
+#include "fix_tdem_energy_store.h"
 #include "fix_tdem_wall_gran.h"
 #include "force.h"
 #include "lammps.h"
@@ -21,6 +23,11 @@ const StyleEntry core_table[] = {
      (void *) &create_pair<PairTDEMGran>},
     {StyleKind::fix, "tdem/wall/gran", "tdem fix style tdem/wall/gran (lsd + cundall_strack)",
      (void *) &create_fix<FixTDEMWallGran>},
+    {StyleKind::compute, "tdem/energy", "tdem compute style tdem/energy (energy balance of pair tdem/gran)",
+     (void *) &create_compute<ComputeTDEMEnergy>},
+    // internal (upper case, as LAMMPS's own NEIGH_HISTORY): created by pair tdem/gran energy yes
+    {StyleKind::fix, "TDEM/ENERGY/STORE", "tdem internal per-atom store of pair tdem/gran energy yes",
+     (void *) &create_fix<FixTDEMEnergyStore>},
     {}};
 }  // namespace
 
@@ -61,7 +68,7 @@ std::string style_listing()
   for (const auto &k : kinds) {
     std::string body, line;
     for (const StyleEntry *e = style_table(); e->name; ++e)
-      if (e->kind == k.kind) {
+      if (e->kind == k.kind && !(e->name[0] >= 'A' && e->name[0] <= 'Z')) {  // internal styles unlisted
         char cell[32];
         std::snprintf(cell, sizeof cell, "%-20s", e->name);
         if (line.size() + 20 > 80) {

@@ -255,7 +255,7 @@ CASES = [
      ["expected 'normal lsd|hertz|walton_braun|thornton|power_law|luding|extended_linear|extended_hertz|continuous_potential ...' "
       "first, got 'end of line'"]),
     ("pair_style arguments", pair(GOOD, "pair_style tdem/gran 2000 50"),
-     ["pair_style tdem/gran takes no arguments", "'2000'"]),
+     ["pair_style tdem/gran: unknown keyword '2000'", "the law goes into pair_coeff"]),
     ("missing type pair", "pair_style tdem/gran\npair_coeff 1 1 " + GOOD + "\npair_coeff 2 2 " + GOOD,
      ["no pair_coeff for type pair 1 2"]),
     ("wall unknown style", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="plane 0 0.1"),
@@ -294,6 +294,20 @@ CASES += [
      ["tdem/wall/gran: atom 1 has its centre on the xplane wall (distance 0) at step 0"]),
 ]
 
+# issue 23: the energy accounting (pair_style tdem/gran energy yes, compute tdem/energy)
+CASES += [
+    ("energy bad value", pair(GOOD, "pair_style tdem/gran energy maybe"),
+     ["pair_style tdem/gran: energy takes no or yes, got 'maybe'"]),
+    ("energy no value", pair(GOOD, "pair_style tdem/gran energy"),
+     ["pair_style tdem/gran: energy needs a value, no or yes"]),
+    ("compute tdem/energy without energy yes", pair(GOOD) + "\ncompute E all tdem/energy\nthermo_style custom step c_E[5]",
+     ["compute tdem/energy needs pair_style tdem/gran energy yes"]),
+    ("compute tdem/energy bad form", pair(GOOD, "pair_style tdem/gran energy yes") + "\ncompute E all tdem/energy form leapfrog",
+     ["compute tdem/energy: form takes kick_drift_kick", "got 'leapfrog'"]),
+    ("energy with grid_correction", pair(GOOD + " grid_correction on", "pair_style tdem/gran energy yes"),
+     ["energy yes with grid_correction on is not supported in LAMMPS yet"]),
+]
+
 wd = lc.workdir("bad")
 for k, (name, body, expect) in enumerate(CASES):
     rc, out = lc.run(args["tdem"], BASE.format(body=body), wd, "in.bad%02d" % k, check=False)
@@ -302,6 +316,8 @@ for k, (name, body, expect) in enumerate(CASES):
     chk.check(ok, "%s: exit %d, %s" % (name, rc, err[0].strip() if err else "no ERROR line"))
 
 for name, body in (("good stiffness", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0 NULL")),
+                   ("good energy", pair(GOOD, "pair_style tdem/gran energy yes") + "\ncompute E all tdem/energy form "
+                    "kick_then_drift\nthermo_style custom step c_E[5] c_E[9]"),
                    ("good restitution", pair(GOODR) + "\n" + WALL.format(law=GOODR, wall="zcylinder 0.2")),
                    ("good walton_braun", pair("normal walton_braun 1e5 2e5 0.1 tangential cundall_strack 0.8 0.5")
                     + "\n" + WALL.format(law="normal walton_braun 1e5 2e5 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL")),

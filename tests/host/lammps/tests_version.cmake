@@ -8,6 +8,10 @@ foreach(t equivalence granular_models restitution parallel_restart plugin exampl
            COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_${t}.py ${_args})
   set_tests_properties(${_pfx}.${t} PROPERTIES LABELS ${_lbl} TIMEOUT 600)
 endforeach()
+# the energy accounting (issue 23): pair_style tdem/gran energy yes and compute tdem/energy against
+# the closed forms and LAMMPS's kinetic energy; a settling bed on 1 and 2 ranks; restart
+add_test(NAME ${_pfx}.energy COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/test_energy.py ${_args})
+set_tests_properties(${_pfx}.energy PROPERTIES LABELS ${_lbl} TIMEOUT 600 PROCESSORS 2)
 # the style pages of docs/lammps/: sections in the manual's order, links, every example runs
 add_test(NAME ${_pfx}.doc_examples
          COMMAND ${TDEM_PYTHON3} ${CMAKE_CURRENT_SOURCE_DIR}/../test_doc_examples.py ${_args} --engine lammps

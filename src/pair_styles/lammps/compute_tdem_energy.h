@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: GPL-2.0-or-later
+// tdem for LAMMPS: compute tdem/energy, the energy balance of a scene with pair tdem/gran energy yes
+// (docs/lammps/compute_tdem_energy.md, docs/energy.md).
+//
+//   compute ID group tdem/energy [form kick_drift_kick|kick_then_drift]
+//
+// Global vector (extensive, J): 1-4 the energy the contacts took out of the motion per part
+// (normal_elastic, normal_damping, tangential, rolling: src/contact/energy.h), 5 their sum, 6 the
+// discrete kinetic energy K~ of the group (translation + rotation), 7 the potential energy of fix
+// gravity, 8 the balance K~ + potential + taken, 9 the balance minus its value at the compute's
+// first evaluation (the residual). Scalar: 5. Per-atom array: 1-4 the parts (half of every contact
+// to each of its atoms), 5 their sum, 6 K~ of the atom, 7 its potential energy. Local array, one
+// row per current contact (dump local): the two atom IDs, the energy taken per part so far, their
+// sum.
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(tdem/energy,ComputeTDEMEnergy);
+// clang-format on
+#else
+
+#ifndef TDEM_LMP_COMPUTE_TDEM_ENERGY_H
+#define TDEM_LMP_COMPUTE_TDEM_ENERGY_H
+
+#include "compute.h"
+
+#include "contact/energy.h"
+
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class ComputeTDEMEnergy : public Compute {
+ public:
+  static constexpr int kVector = 9, kColumns = 7;
+  ComputeTDEMEnergy(class LAMMPS *, int, char **);
+  ~ComputeTDEMEnergy() override;
+  void init() override;
+  double compute_scalar() override;
+  void compute_vector() override;
+  void compute_peratom() override;
+  void compute_local() override;
+  int pack_reverse_comm(int, int, double *) override;
+  void unpack_reverse_comm(int, int *, double *) override;
+  double memory_usage() override;
+
+ private:
+  tdem::energy::Form form;
+  class PairTDEMGran *pair;
+  const double *gvec;  // fix gravity's acceleration vector (nullptr: no gravity)
+  int gravity_groupbit;
+  bool have_reference;
+  double reference;  // the balance at the first evaluation
+  double **peratom;
+  int nmax;
+  std::vector<double> local_rows;
+  double **local;  // row pointers into local_rows
+  int nlocal_max;
+  // K~ and the potential energy of owned atom i of the group
+  void body_energy(int i, double &kinetic, double &potential) const;
+};
+
+}  // namespace LAMMPS_NS
+
+#endif
+#endif
