@@ -185,11 +185,24 @@ TDEM_KERNEL void reverse(const T* s, T* out) noexcept {
 }
 // One step of a contact kept in slots s: the work of every part over the motion d from the saved
 // loads to `now`, then `now` saved. A contact's first step starts from zeroed slots (no load), its
-// last step (the first without contact) passes now = Compact{} (no load).
+// last step (the first without contact) passes now = Compact{} (no load). The same sums as
+// accumulate(w, loads_of(restore(s)), loads_of(now), d), written out for the hosts' contact loops:
+// the torques -c n x ft do the work -(n x ft) . (ci dth_i + cj dth_j).
 template <class T>
 TDEM_KERNEL void step(T* s, const Compact<T>& now, const Motion<T>& d) noexcept {
-  const Loads<T> before = loads_of(restore(s)), after = loads_of(now);
-  for (int p = 0; p < kParts; ++p) s[kCompactSize + p] += step_work(before.part[p], after.part[p], d);
+  auto dot = [](const T* a, const T* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  auto tang = [&](const T* n, const T* ft, T ci, T cj) {
+    const T c[3] = {n[1] * ft[2] - n[2] * ft[1], n[2] * ft[0] - n[0] * ft[2], n[0] * ft[1] - n[1] * ft[0]};
+    const T g[3] = {ci * d.dti[0] + cj * d.dtj[0], ci * d.dti[1] + cj * d.dtj[1], ci * d.dti[2] + cj * d.dtj[2]};
+    return dot(ft, d.dx) - dot(c, g);
+  };
+  const T roll[3] = {d.dti[0] - d.dtj[0], d.dti[1] - d.dtj[1], d.dti[2] - d.dtj[2]};
+  const T n0dx = dot(s, d.dx), n1dx = dot(now.n, d.dx);
+  T* w = s + kCompactSize;
+  w[normal_elastic] += T(0.5) * (s[3] * n0dx + now.fe * n1dx);
+  w[normal_damping] += T(0.5) * (s[4] * n0dx + now.fd * n1dx);
+  w[tangential] += T(0.5) * (tang(s, s + 5, s[8], s[9]) + tang(now.n, now.ft, now.ci, now.cj));
+  w[rolling] += T(0.5) * (dot(s + 10, roll) + dot(now.tr, roll));
   save(now, s);
 }
 // The motion of a pair over a step from the velocities of the step's drift (velocity Verlet: the

@@ -144,8 +144,8 @@ TEST(Energy, CompactPairLoadsCloseTheBalanceOfTwoBodies) {
   for (int p = 0; p < energy::kParts; ++p) EXPECT_GT(std::fabs(acc.w[p]), 1e-9) << energy::part_names[p];
 }
 
-// The host slots (save, restore, reverse, step): the same contact kept from either side takes the
-// same work. Steps of a contact from side i-j, and of its mirror j-i (slots reversed, the motion
+// The host slots (save, restore, reverse, step): step takes the work accumulate takes over the
+// loads (loads_of), and the same contact kept from either side takes the same work. Steps of a contact from side i-j, and of its mirror j-i (slots reversed, the motion
 // seen from j: -dx, the rotations swapped), accumulate the same work per part; the slots survive a
 // reversal in the middle (a host's history transfer) and the ended step adds the last half step.
 TEST(Energy, HostSlotsAreTheSameFromEitherSide) {
@@ -171,8 +171,12 @@ TEST(Energy, HostSlotsAreTheSameFromEitherSide) {
     return from_j ? energy::pair_motion(vj, vi, wj, wi, 1e-3) : energy::pair_motion(vi, vj, wi, wj, 1e-3);
   };
   double a[energy::kSlots] = {}, b[energy::kSlots] = {}, c[energy::kSlots] = {};
+  energy::Work<double> ref;  // the reference: accumulate over the loads (loads_of) from side i
+  energy::Compact<double> prev;
   for (int n = 1; n <= 12; ++n) {
     const energy::Compact<double> now = compact_at(n);
+    energy::accumulate(ref, energy::loads_of(prev), energy::loads_of(now), motion_at(n, false));
+    prev = now;
     energy::step(a, now, motion_at(n, false));   // always from i
     energy::step(b, mirror(now), motion_at(n, true));  // always from j
     if (n == 6) {  // c: from i, then handed over to j (the host's transfer of the history)
@@ -182,12 +186,14 @@ TEST(Energy, HostSlotsAreTheSameFromEitherSide) {
     }
     energy::step(c, n < 6 ? now : mirror(now), motion_at(n, n >= 6));
   }
+  energy::accumulate(ref, energy::loads_of(prev), energy::loads_of(energy::Compact<double>{}), motion_at(13, false));
   energy::step(a, energy::Compact<double>{}, motion_at(13, false));  // the first step without contact
   energy::step(b, energy::Compact<double>{}, motion_at(13, true));
   energy::step(c, energy::Compact<double>{}, motion_at(13, true));
   for (int p = 0; p < energy::kParts; ++p) {
     const double w = a[energy::kCompactSize + p];
     EXPECT_GT(std::fabs(w), 1e-9) << energy::part_names[p];
+    EXPECT_NEAR(w, ref.w[p], 1e-15) << energy::part_names[p];  // step = accumulate over loads_of
     EXPECT_NEAR(b[energy::kCompactSize + p], w, 1e-15) << energy::part_names[p];
     EXPECT_NEAR(c[energy::kCompactSize + p], w, 1e-15) << energy::part_names[p];
   }

@@ -342,16 +342,18 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
             continue;
           }
         }
-        // not touching: forget the history
+        // not touching: forget the history (energy: its slots are zero already, energy_end
+        // cleared them at the contact's end)
         touch[jj] = 0;
+        const int hclear = C == 2 ? hsize - tdem::energy::kSlots : hsize;
         if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
-          tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, hsize);
+          tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, hclear);
           continue;
         }
         shear[0] = 0.0;
         shear[1] = 0.0;
         shear[2] = 0.0;
-        tdem_lammps::clear_law_history(shear, hsize);
+        tdem_lammps::clear_law_history(shear, hclear);
         continue;
       }
       // coincident centres have no normal: stop with the two atom IDs instead of NaN forces

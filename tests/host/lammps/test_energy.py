@@ -337,7 +337,8 @@ for np_ in (1, 2):
     at_restart = [r for r in whole if r[0] == 1500][0]
     dev = max(abs(cont[-1][k] - whole[-1][k]) for k in range(1, 8)) / whole[-1][5]
     print("restart np %d: taken %.15e (continued) vs %.15e (written by the run)" % (np_, cont[-1][5], whole[-1][5]))
-    chk.check(cont[0][5] == at_restart[5] and dev < 1e-12,
+    # (the sums over the ranks may add in another order after read_restart: the last bit)
+    chk.check(abs(cont[0][5] - at_restart[5]) <= 1e-14 * at_restart[5] and dev < 1e-12,
               "restart np %d: the restart carries the energy taken (%.12e at the restart step) and continues the "
               "run's totals to %.1e" % (np_, cont[0][5], dev))
     # a control: without the store of ended contacts the restart would lose their share
