@@ -69,8 +69,25 @@ void ComputeTDEMEnergy::init()
   if (!pair || !pair->energy_enabled())
     error->all(FLERR, "compute tdem/energy needs pair_style tdem/gran energy yes (the contacts account their "
                       "work only then)");
+  // the fixes whose contacts account their energy (fix tdem/wall/gran energy yes); a tdem wall
+  // without it would leave its contacts out of the balance
+  sources.clear();
+  for (int k = 0; k < modify->nfix; k++) {
+    const auto *src = dynamic_cast<const tdem_lammps::EnergySource *>(modify->fix[k]);
+    if (!src) continue;
+    if (!src->energy_enabled())
+      error->all(FLERR, std::string("compute tdem/energy: fix ") + modify->fix[k]->id + " (" + modify->fix[k]->style +
+                            ") does not account its contacts' energy; add 'energy yes' to it");
+    sources.push_back(src);
+  }
   if (!atom->radius_flag || !atom->rmass_flag || !atom->omega_flag || !atom->torque_flag)
     error->all(FLERR, "compute tdem/energy requires atom_style sphere");
+  // fixes whose forces the balance does not know yet: it does not close with them
+  if (comm->me == 0)
+    for (const char *style : {"^wall/gran", "^tdem/clump", "^rigid", "^viscous", "^addforce"})
+      for (const Fix *fx : tdem_lammps::compat::fixes_by_style(modify, style))
+        error->warning(FLERR, std::string("compute tdem/energy: the work of fix ") + fx->id + " (" + fx->style +
+                                  ") is not in the balance; c_" + id + "[10] will not stay at round-off");
   // fix gravity: its potential energy -m g . x (x unwrapped)
   gvec = nullptr;
   gravity_groupbit = 0;
@@ -101,8 +118,10 @@ void ComputeTDEMEnergy::body_energy(int i, double &kinetic, double &potential) c
 void ComputeTDEMEnergy::compute_vector()
 {
   invoked_vector = update->ntimestep;
-  double local[en::kParts + 2];
+  double local[en::kParts + 3];
   pair->energy_sums(local, nullptr);
+  double walls = 0.0;
+  for (const auto *src : sources) src->energy_sums(local, &walls, nullptr, 7);
   double kin = 0.0, pot = 0.0;
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) continue;
@@ -110,17 +129,18 @@ void ComputeTDEMEnergy::compute_vector()
     body_energy(i, k, p);
     kin += k, pot += p;
   }
-  local[en::kParts] = kin, local[en::kParts + 1] = pot;
-  double all[en::kParts + 2];
-  MPI_Allreduce(local, all, en::kParts + 2, MPI_DOUBLE, MPI_SUM, world);
+  local[en::kParts] = kin, local[en::kParts + 1] = pot, local[en::kParts + 2] = walls;
+  double all[en::kParts + 3];
+  MPI_Allreduce(local, all, en::kParts + 3, MPI_DOUBLE, MPI_SUM, world);
   double taken = 0.0;
   for (int p = 0; p < en::kParts; p++) vector[p] = all[p], taken += all[p];
   vector[4] = taken;
   vector[5] = all[en::kParts];
   vector[6] = all[en::kParts + 1];
-  vector[7] = vector[5] + vector[6] + taken;
-  if (!have_reference) reference = vector[7], have_reference = true;
-  vector[8] = vector[7] - reference;
+  vector[7] = all[en::kParts + 2];
+  vector[8] = vector[5] + vector[6] + taken - vector[7];
+  if (!have_reference) reference = vector[8], have_reference = true;
+  vector[9] = vector[8] - reference;
 }
 
 double ComputeTDEMEnergy::compute_scalar()
@@ -145,6 +165,8 @@ void ComputeTDEMEnergy::compute_peratom()
   double sums[en::kParts];
   pair->energy_sums(sums, peratom);
   if (force->newton_pair) tdem_lammps::compat::reverse_comm(comm, this);
+  double walls = 0.0;
+  for (const auto *src : sources) src->energy_sums(sums, &walls, peratom, 7);
   for (int i = 0; i < atom->nlocal; i++) {
     if (!(atom->mask[i] & groupbit)) {
       for (int c = 0; c < kColumns; c++) peratom[i][c] = 0.0;

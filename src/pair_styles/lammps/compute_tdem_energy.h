@@ -4,14 +4,16 @@
 //
 //   compute ID group tdem/energy [form kick_drift_kick|kick_then_drift]
 //
-// Global vector (extensive, J): 1-4 the energy the contacts took out of the motion per part
-// (normal_elastic, normal_damping, tangential, rolling: src/contact/energy.h), 5 their sum, 6 the
-// discrete kinetic energy K~ of the group (translation + rotation), 7 the potential energy of fix
-// gravity, 8 the balance K~ + potential + taken, 9 the balance minus its value at the compute's
-// first evaluation (the residual). Scalar: 5. Per-atom array: 1-4 the parts (half of every contact
-// to each of its atoms), 5 their sum, 6 K~ of the atom, 7 its potential energy. Local array, one
-// row per current contact (dump local): the two atom IDs, the energy taken per part so far, their
-// sum.
+// Global vector (extensive, J): 1-4 the energy the contacts (of pair tdem/gran and of the fixes
+// with energy yes, e.g. fix tdem/wall/gran) took out of the motion per part (normal_elastic,
+// normal_damping, tangential, rolling: src/contact/energy.h), 5 their sum, 6 the discrete kinetic
+// energy K~ of the group (translation + rotation), 7 the potential energy of fix gravity, 8 the work
+// the walls' own motion did on the spheres, 9 the balance K~ + potential + taken - walls' work, 10
+// the balance minus its value at the compute's first evaluation (the residual). Scalar: 5.
+// Per-atom array: 1-4 the parts (half of every pair contact to each of its atoms, all of a wall
+// contact to its sphere), 5 their sum, 6 K~ of the atom, 7 its potential energy, 8 the walls' work
+// on it. Local array, one row per current pair contact (dump local): the two atom IDs, the energy
+// taken per part so far, their sum.
 
 #ifdef COMPUTE_CLASS
 // clang-format off
@@ -25,6 +27,7 @@ ComputeStyle(tdem/energy,ComputeTDEMEnergy);
 #include "compute.h"
 
 #include "contact/energy.h"
+#include "tdem_lammps_energy.h"
 
 #include <vector>
 
@@ -32,7 +35,7 @@ namespace LAMMPS_NS {
 
 class ComputeTDEMEnergy : public Compute {
  public:
-  static constexpr int kVector = 9, kColumns = 7;
+  static constexpr int kVector = 10, kColumns = 8;
   ComputeTDEMEnergy(class LAMMPS *, int, char **);
   ~ComputeTDEMEnergy() override;
   void init() override;
@@ -47,6 +50,7 @@ class ComputeTDEMEnergy : public Compute {
  private:
   tdem::energy::Form form;
   class PairTDEMGran *pair;
+  std::vector<const tdem_lammps::EnergySource *> sources;  // fixes with energy yes
   const double *gvec;  // fix gravity's acceleration vector (nullptr: no gravity)
   int gravity_groupbit;
   bool have_reference;

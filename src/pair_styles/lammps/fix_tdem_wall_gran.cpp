@@ -5,6 +5,8 @@
 
 #include "grid_host.h"
 
+#include "contact/energy.h"
+
 #include "atom.h"
 #include "domain.h"
 #include "error.h"
@@ -52,8 +54,7 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
   dt = update->dt;
 
   int iarg = tdem_lammps::parse_law(lmp, where, narg, arg, 3, true, law);
-  // the tangential block + the normal law's slots (+ the rolling displacement)
-  rows_init(tdem_lammps::law_history_size(law, law.tlaw), "tdem/wall/gran:history");
+  energy_on = 0;
 
   // wall geometry
   if (iarg >= narg)
@@ -117,11 +118,23 @@ FixTDEMWallGran::FixTDEMWallGran(LAMMPS *lmp, int narg, char **arg) :
         wshear = 1;
       }
       iarg += nval + 1;
+    } else if (key == "energy") {
+      if (iarg + 1 >= narg) error->all(FLERR, where + ": energy needs a value, no or yes");
+      const std::string val = arg[iarg + 1];
+      if (val != "yes" && val != "no") error->all(FLERR, where + ": energy takes no or yes, got '" + val + "'");
+      energy_on = val == "yes";
+      iarg += 2;
     } else {
       error->all(FLERR, where + ": unexpected argument '" + key +
-                            "'; allowed after the wall style: wiggle dim A T, shear dim V");
+                            "'; allowed after the wall style: wiggle dim A T, shear dim V, energy no|yes");
     }
   }
+  if (energy_on && law.gc)
+    error->all(FLERR, where + ": energy yes with grid_correction on is not supported in LAMMPS yet; turn one off");
+  // the tangential block + the normal law's slots (+ the rolling displacement); energy yes: the
+  // current contact's slots, the ended contacts' energy per part and the wall's work
+  law_width = tdem_lammps::law_history_size(law, law.tlaw);
+  rows_init(law_width + (energy_on ? tdem::energy::kSlots + tdem::energy::kParts + 1 : 0), "tdem/wall/gran:history");
 
   if (wallstyle == XPLANE && domain->xperiodic)
     error->all(FLERR, where + ": xplane wall in a periodic dimension");
@@ -190,13 +203,25 @@ struct WallRunnerCorrected {
   FixTDEMWallGran *f;
   template <int M, int E, int S, int TL = 0> void run() { f->template eval<-1, -1, -1, TL, 1>(); }
 };
+// the energy accounting: the law at run time, the tangential law at compile time
+struct WallRunnerEnergy {
+  FixTDEMWallGran *f;
+  template <int M, int E, int S, int TL = 0> void run() { f->template eval<-1, -1, -1, TL, 2>(); }
+};
 }  // namespace
 
 void FixTDEMWallGran::post_force(int /*vflag*/)
 {
   if (neighbor->ago == 0) rigid.refresh(atom, memory, "tdem/wall/gran:mass_rigid");
   if (clump.mode != 0) {
+    if (energy_on)
+      error->all(FLERR, std::string("fix ") + id + " tdem/wall/gran: energy yes with the multiple-contact "
+                                                   "correction of fix tdem/clump is not supported yet");
     tdem_lammps::dispatch(false, law.mode, law.end, law.slip, law.tlaw, WallRunnerCorrected{this});
+    return;
+  }
+  if (energy_on) {
+    tdem_lammps::dispatch(false, law.mode, law.end, law.slip, law.tlaw, WallRunnerEnergy{this});
     return;
   }
   // rolling resistance and the time-grid correction run on the run-time path (the compile-time
@@ -229,7 +254,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
   [[maybe_unused]] std::size_t kcorr = 0;
   [[maybe_unused]] const tdem::clumps::Correction cmode = clump.correction();
   [[maybe_unused]] const bool share = clump.shares();
-  if constexpr (C != 0) {
+  if constexpr (C == 1) {
     cv.fetch(clump.fix, cmode == tdem::clumps::Correction::local_mass);
     if (share) {
       clump.tally.clear();
@@ -290,6 +315,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double rsq = dx * dx + dy * dy + dz * dz;
     const double rad = radius[i];
     double *shear = rows_[i];
+    [[maybe_unused]] double *es = shear + law_width;  // energy yes: the contact's slots
     if constexpr (M < 0) {
       // grid_correction: the first step after a corrected contact gets the end's impulse; the
       // whole row (with the correction's values) is forgotten
@@ -300,12 +326,15 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
       }
     }
     if (rsq > rad * rad) {
+      if constexpr (C == 2) {  // energy: a contact at the last step (a unit normal saved) has ended
+        if (es[0] != 0.0 || es[1] != 0.0 || es[2] != 0.0) energy_end(i, es, vwall, history_update);
+      }
       if (TL != tdem_lammps::TLAW_CUNDALL_STRACK) {
-        tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, width_);
+        tdem_lammps::clear_history<(TL > 0 ? TL : 0)>(shear, law_width);
         continue;
       }
       shear[0] = shear[1] = shear[2] = 0.0;
-      tdem_lammps::clear_law_history(shear, width_);
+      tdem_lammps::clear_law_history(shear, law_width);
       continue;
     }
     // a centre on the wall surface has no normal: stop with the atom ID instead of NaN forces
@@ -314,7 +343,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     double meff = rigid.of(i, rmass[i]);
 
     const double r = sqrt(rsq);
-    if constexpr (C != 0) {
+    if constexpr (C == 1) {
       if (cv.body[i] >= 0 && cmode == tdem::clumps::Correction::local_mass) {
         // locally reduced mass at the contact point (middle of the overlap); the wall adds 0
         const double n[3] = {dx / r, dy / r, dz / r};
@@ -333,6 +362,7 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     const double wr3 = rad * omg[i][2] * rinv;
 
     double ccel, fs[3], troll[3] = {0.0, 0.0, 0.0};
+    [[maybe_unused]] tdem::NormalResult<double> nres{};
     bool corrected = false;
     if constexpr (M < 0) {
       if (law.gc && history_update && tdem_lammps::gc_needs(law, E, shear[width_ - 1] == 0.0, shear, width_)) {
@@ -345,8 +375,9 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
     if (!corrected)
       tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv, rad - r, vr1,
                                                  vr2, vr3, wr1, wr2, wr3, dt, history_update, shear,
-                                                 ccel, fs, rad, 0.0, omg[i], nullptr, troll);
-    if constexpr (C != 0) {
+                                                 ccel, fs, rad, 0.0, omg[i], nullptr, troll,
+                                                 C == 2 ? &nres : nullptr);
+    if constexpr (C == 1) {
       // count / overlap: the whole contact force times s (the history stays the law's own)
       if (cv.body[i] >= 0 && share) {
         const double sc = clump.tally.factor(cmode, kcorr++, rad - r);
@@ -354,6 +385,29 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
         fs[0] *= sc;
         fs[1] *= sc;
         fs[2] *= sc;
+      }
+    }
+
+    if constexpr (C == 2) {
+      // energy: the step's work of the parts over the motion relative to the wall, and the wall's
+      // work on the sphere over the wall's own motion (trapezoid of the force on the sphere); at
+      // set-up the loads only
+      namespace en = tdem::energy;
+      en::Compact<double> now;
+      now.n[0] = dx * rinv, now.n[1] = dy * rinv, now.n[2] = dz * rinv;
+      now.fe = nres.elastic;
+      now.fd = ccel * r - nres.elastic;
+      now.ci = rad;
+      for (int k = 0; k < 3; k++) now.ft[k] = fs[k], now.tr[k] = law.roll ? troll[k] : 0.0;
+      if (history_update) {
+        double fsum = 0.0;
+        for (int k = 0; k < 3; k++)
+          fsum += ((es[3] + es[4]) * es[k] + es[5 + k] + (now.fe + now.fd) * now.n[k] + now.ft[k]) * vwall[k];
+        es[en::kSlots + en::kParts] += 0.5 * fsum * dt;
+        static const double rest[3] = {0.0, 0.0, 0.0};
+        en::step(es, now, en::pair_motion(v[i], vwall, omg[i], rest, dt));
+      } else {
+        en::save(now, es);
       }
     }
 
@@ -408,6 +462,40 @@ void FixTDEMWallGran::gc_separation_wall(int i, const double *shear, const doubl
   double ccel, fs[3], fw[3];
   if (tdem_lammps::gc_separation(k, shear, width_, ccel, fs))
     tdem_lammps::add_wall_force(atom->f[i], atom->torque[i], d[0], d[1], d[2], ccel, fs, rinv, rad, fw);
+}
+
+// energy yes: the first step without contact of atom i with the wall: the last half step of its
+// loads (over the motion relative to the wall; the wall's work over its own), then the contact's
+// energy to the atom's ended sums and its slots zeroed
+void FixTDEMWallGran::energy_end(int i, double *slots, const double *vwall, bool update)
+{
+  namespace en = tdem::energy;
+  if (update) {
+    double fsum = 0.0;
+    for (int k = 0; k < 3; k++) fsum += ((slots[3] + slots[4]) * slots[k] + slots[5 + k]) * vwall[k];
+    slots[en::kSlots + en::kParts] += 0.5 * fsum * dt;
+    static const double rest[3] = {0.0, 0.0, 0.0};
+    en::step(slots, en::Compact<double>{}, en::pair_motion(atom->v[i], vwall, atom->omega[i], rest, dt));
+  }
+  for (int p = 0; p < en::kParts; p++) slots[en::kSlots + p] -= slots[en::kCompactSize + p];
+  for (int m = 0; m < en::kSlots; m++) slots[m] = 0.0;
+}
+
+void FixTDEMWallGran::energy_sums(double *parts, double *work, double **peratom, int wall_column) const
+{
+  namespace en = tdem::energy;
+  if (!energy_on) return;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double *es = rows_[i] + law_width;
+    for (int p = 0; p < en::kParts; p++) {
+      const double taken = es[en::kSlots + p] - es[en::kCompactSize + p];
+      parts[p] += taken;
+      if (peratom) peratom[i][p] += taken;
+    }
+    *work += es[en::kSlots + en::kParts];
+    if (peratom) peratom[i][wall_column] += es[en::kSlots + en::kParts];
+  }
 }
 
 void FixTDEMWallGran::centre_on_wall(int i) {

@@ -306,6 +306,17 @@ CASES += [
      ["compute tdem/energy: form takes kick_drift_kick", "got 'leapfrog'"]),
     ("energy with grid_correction", pair(GOOD + " grid_correction on", "pair_style tdem/gran energy yes"),
      ["energy yes with grid_correction on is not supported in LAMMPS yet"]),
+    ("wall energy bad value", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0 NULL energy 1"),
+     ["tdem/wall/gran: energy takes no or yes, got '1'"]),
+    ("compute tdem/energy with a wall without energy", pair(GOOD, "pair_style tdem/gran energy yes") + "\n" +
+     WALL.format(law=GOOD, wall="zplane 0 NULL") + "\ncompute E all tdem/energy\nthermo_style custom step c_E[5]",
+     ["compute tdem/energy: fix w (tdem/wall/gran) does not account its contacts' energy; add 'energy yes' to it"]),
+    ("grate energy bad value", pair(GOOD) + "\nfix gr all tdem/grate " + GOOD + " rows 1 bar_length 0.05 width 0.1 energy on",
+     ["keyword 'energy' = 'on' is not allowed; allowed: no, yes"]),
+    ("compute tdem/energy with a grate without energy", pair(GOOD, "pair_style tdem/gran energy yes") +
+     "\nfix gr all tdem/grate " + GOOD + " rows 1 bar_length 0.05 width 0.1\ncompute E all tdem/energy\n"
+     "thermo_style custom step c_E[5]",
+     ["compute tdem/energy: fix gr (tdem/grate) does not account its contacts' energy; add 'energy yes' to it"]),
 ]
 
 wd = lc.workdir("bad")
@@ -316,8 +327,9 @@ for k, (name, body, expect) in enumerate(CASES):
     chk.check(ok, "%s: exit %d, %s" % (name, rc, err[0].strip() if err else "no ERROR line"))
 
 for name, body in (("good stiffness", pair(GOOD) + "\n" + WALL.format(law=GOOD, wall="zplane 0 NULL")),
-                   ("good energy", pair(GOOD, "pair_style tdem/gran energy yes") + "\ncompute E all tdem/energy form "
-                    "kick_then_drift\nthermo_style custom step c_E[5] c_E[9]"),
+                   ("good energy", pair(GOOD, "pair_style tdem/gran energy yes") + "\n" +
+                    WALL.format(law=GOOD, wall="zplane 0 NULL wiggle z 1e-4 1e-3 energy yes") +
+                    "\ncompute E all tdem/energy form kick_then_drift\nthermo_style custom step c_E[5] c_E[10]"),
                    ("good restitution", pair(GOODR) + "\n" + WALL.format(law=GOODR, wall="zcylinder 0.2")),
                    ("good walton_braun", pair("normal walton_braun 1e5 2e5 0.1 tangential cundall_strack 0.8 0.5")
                     + "\n" + WALL.format(law="normal walton_braun 1e5 2e5 tangential cundall_strack 0.8 0.5", wall="zplane 0 NULL")),

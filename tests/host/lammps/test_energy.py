@@ -7,7 +7,7 @@ Expected values are independent of src/contact: the closed forms below and LAMMP
 kinetic energy (thermo ke plus the rotational energy from the velocities).
 1. Head-on impact of two spheres (1 m/s, m* = m/2) for every normal law, fix nve/sphere
    (velocity Verlet), thermo every step:
-   * the balance residual c_E[9] stays below 1e-12 K0 at every step (round-off; a wrong sign of
+   * the balance residual c_E[10] stays below 1e-12 K0 at every step (round-off; a wrong sign of
      one part or of the relative motion gives ~1e-3 K0);
    * after the contact, the energy taken (c_E[5]) equals the kinetic energy lost, from LAMMPS's
      velocities, to 1e-12 K0;
@@ -31,6 +31,11 @@ kinetic energy (thermo ke plus the rotational energy from the velocities).
    contact's local row holds the energy taken while it lasts; read_restart continues the
    totals of the run that wrote the file (1e-12; the ended contacts' share is in the per-atom store,
    the current contacts' in the contact history).
+2b. Walls, fix tdem/wall/gran energy yes: a sphere head-on against a wall at rest vs the closed
+   form (m* = m); oblique with spin and rolling; a wiggling and a shearing wall, whose work c_E[8]
+   closes the balance: kinetic energy lost = taken - walls' work (1e-12).
+2c. A grate stroke (fix tdem/grate energy yes, a fixed and a moving row, gravity, 1 and 2 ranks):
+   the bars' work c_E[8] > 0 and the residual below 1e-11 of the energy moved.
 4. Bad input: compute tdem/energy without energy yes, a bad energy value, energy with
    grid_correction give ERROR lines.
 """
@@ -113,7 +118,7 @@ compute         kt all ke
 variable        ktot equal c_kt+c_rot
 dump            loc all local 1 contacts.txt c_E[1] c_E[2] c_E[7]
 dump_modify     loc format float %.17g
-thermo_style    custom step c_E[1] c_E[2] c_E[3] c_E[4] c_E[5] c_E[6] c_E[7] c_E[8] c_E[9] v_ktot
+thermo_style    custom step c_E[1] c_E[2] c_E[3] c_E[4] c_E[5] c_E[6] c_E[7] c_E[8] c_E[9] c_E[10] v_ktot
 thermo_modify   format float %.17g
 thermo          1
 run             {n}
@@ -129,7 +134,7 @@ def impact(law, dt=1e-6, n=1600, offset=0.0, spin=0.0, newton="off"):
     _, out = lc.run(EXE, text, d)
     rows = [list(map(float, r.split())) for r in lc.thermo_blocks(out)[1:]]
     local = local_sums(os.path.join(d, "contacts.txt"))
-    for r in rows:  # column 11: the local array's last column summed (the current contacts)
+    for r in rows:  # column 12: the local array's last column summed (the current contacts)
         r.append(local.get(int(r[0]), 0.0))
     return rows
 
@@ -162,8 +167,8 @@ for name, law, e, hyst in LAWS:
     n = contact_steps(rows)
     last = rows[-1]
     parts = last[1:5]
-    res = max(abs(r[9]) for r in rows)
-    lost = rows[0][10] - last[10]
+    res = max(abs(r[10]) for r in rows)
+    lost = rows[0][11] - last[11]
     print("%-20s N %4d  taken %.9e (elastic %.3e damping %.3e tangential %.1e rolling %.1e)  K lost %.9e  "
           "residual max %.2e K0" % (name, n, last[5], parts[0], parts[1], parts[2], parts[3], lost, res / K0))
     chk.check(n > 50 and last[5] > 0.0, "%s: the contact happened and ended (N = %d steps)" % (name, n))
@@ -186,8 +191,8 @@ for name, law, e, hyst in LAWS:
     chk.check(abs(parts[2]) < 1e-15 * K0 and parts[3] == 0.0, "%s: no tangential, no rolling part head-on" % name)
     # the local array (one row per current contact): during the contact its row holds everything
     # taken so far, after it the contact has no row
-    during = [r for r in rows if r[11] != 0.0]
-    chk.check(len(during) >= n - 2 and all(abs(r[11] - r[5]) <= 1e-15 * K0 for r in during) and last[11] == 0.0,
+    during = [r for r in rows if r[12] != 0.0]
+    chk.check(len(during) >= n - 2 and all(abs(r[12] - r[5]) <= 1e-15 * K0 for r in during) and last[12] == 0.0,
               "%s: the local row of the contact holds the energy taken during the contact (%d steps)"
               % (name, len(during)))
 
@@ -207,8 +212,8 @@ SPIN = -60.0  # rad/s of sphere 1 about y (without it both spheres spin alike an
 for name, law, roll in TANG:
     rows = impact(law, offset=R, spin=SPIN, n=1600)
     last = rows[-1]
-    res = max(abs(r[9]) for r in rows)
-    lost = rows[0][10] - last[10]
+    res = max(abs(r[10]) for r in rows)
+    lost = rows[0][11] - last[11]
     print("%-20s taken %.9e (elastic %.3e damping %.3e tangential %.3e rolling %.3e)  K lost %.9e  residual max "
           "%.2e K0" % (name, last[5], last[1], last[2], last[3], last[4], lost, res / K0))
     chk.check(res < 1e-12 * K0, "oblique %s: balance residual %.2e K0 < 1e-12" % (name, res / K0))
@@ -217,6 +222,127 @@ for name, law, roll in TANG:
     chk.check(last[3] > 0.0, "oblique %s: tangential part %.3e > 0" % (name, last[3]))
     if roll:
         chk.check(last[4] != 0.0, "oblique %s: rolling part %.3e" % (name, last[4]))
+
+# 2b. walls (fix tdem/wall/gran energy yes): a sphere on a wall at rest against the closed form
+# (m* = m), oblique with spin, and walls that move (wiggle along the normal, shear): the wall's work
+# c_E[8] closes the balance
+WALL = """
+units           si
+atom_style      sphere
+atom_modify     map array
+boundary        f f f
+newton          off
+comm_modify     vel yes
+region          box block -0.05 0.05 -0.05 0.05 -0.05 0.05 units box
+create_box      1 box
+create_atoms    1 single 0 0 {z!r} units box
+set             group all diameter {d!r}
+set             group all density {rho!r}
+velocity        all set {vx!r} 0 {vz!r}
+set             atom 1 omega 0 {spin!r} 0
+neighbor        0.002 bin
+neigh_modify    delay 0
+pair_style      tdem/gran energy yes
+pair_coeff      * * {law}
+fix             w all tdem/wall/gran {law} zplane 0 NULL {motion} energy yes
+fix             nve all nve/sphere
+timestep        1e-6
+compute         E all tdem/energy
+compute         A all tdem/energy
+compute         S all reduce sum c_A[5] c_A[8]
+compute         rot all erotate/sphere
+compute         kt all ke
+variable        ktot equal c_kt+c_rot
+thermo_style    custom step c_E[1] c_E[2] c_E[3] c_E[4] c_E[5] c_E[6] c_E[7] c_E[8] c_E[9] c_E[10] v_ktot c_S[1] c_S[2]
+thermo_modify   format float %.17g
+thermo          1
+run             {n}
+"""
+KW = 0.5 * M * 1.0  # 1 m/s against the wall
+for name, law, vx, motion, n in (
+        ("lsd head-on", "normal lsd restitution 0.8 5e-4" + TS, 0.0, "", 1200),
+        ("hertz oblique", HZ + "tangential mindlin_deresiewicz 1e8 0.3 0.3 rolling sds 2 0.001 0.05", 0.6, "", 1400),
+        ("walton_braun wiggle", "normal walton_braun 2e5 4.08e5" + TS, 0.0, "wiggle z 2e-4 2e-3", 1600),
+        ("lsd shear", "normal lsd restitution 0.7 5e-4" + TS, 0.2, "shear x -0.5", 1200)):
+    text = WALL.format(z=R + 2e-5, d=2 * R, rho=RHO, vx=vx, vz=-1.0, spin=-20.0 if vx else 0.0, law=law,
+                       motion=motion, n=n)
+    _, out = lc.run(EXE, text, lc.workdir("energy_wall"))
+    rows = [list(map(float, r.split())) for r in lc.thermo_blocks(out)[1:]]
+    last = rows[-1]
+    k0 = rows[0][11]
+    res = max(abs(r[10]) for r in rows)
+    print("wall %-20s taken %.9e (elastic %.3e damping %.3e tangential %.3e rolling %.3e)  wall work %.3e  "
+          "K %.6e -> %.6e  residual max %.2e K0" % (name, last[5], last[1], last[2], last[3], last[4], last[8], k0,
+                                                   last[11], res / k0))
+    chk.check(res < 1e-12 * k0 and last[5] > 0.0, "wall %s: balance residual %.2e K0 < 1e-12" % (name, res / k0))
+    chk.check(abs(last[12] - last[5]) < 1e-15 * k0 and abs(last[13] - last[8]) < 1e-15 * k0,
+              "wall %s: the per-atom array summed equals the vector (taken, wall work)" % name)
+    if motion:
+        chk.check(abs((k0 - last[11]) - (last[5] - last[8])) < 1e-12 * k0 and last[8] != 0.0,
+                  "wall %s: kinetic energy lost %.9e = taken - wall work %.9e (wall work %.3e)"
+                  % (name, k0 - last[11], last[5] - last[8], last[8]))
+    else:
+        chk.check(abs((k0 - last[11]) - last[5]) < 1e-12 * k0 and last[8] == 0.0,
+                  "wall %s: kinetic energy lost %.9e = taken (a wall at rest does no work)" % (name, k0 - last[11]))
+    if name == "lsd head-on":
+        nw = contact_steps(rows)
+        cf = KW * (1 - 0.8 ** 2)
+        chk.check(abs(last[5] - cf) < 2.0 / nw * k0, "wall %s: taken %.6e vs closed form 1/2 m v0^2 (1-e^2) = %.6e: "
+                  "%.2e K0 < 2/N (N = %d)" % (name, last[5], cf, abs(last[5] - cf) / k0, nw))
+
+# 2c. a grate stroke (fix tdem/grate energy yes): spheres on a fixed and a moving row of bars under
+# gravity, 1 and 2 ranks; the bars' work closes the balance
+GRATE = """
+units           si
+atom_style      sphere
+atom_modify     map array
+boundary        f p f
+newton          {newton}
+comm_modify     vel yes
+{processors}
+region          box block -0.05 0.25 -0.027 0.027 -0.1 0.1 units box
+create_box      1 box
+{atoms}
+set             group all diameter 0.01
+set             group all density 2500
+neighbor        0.002 bin
+neigh_modify    delay 0
+pair_style      tdem/gran energy yes
+pair_coeff      * * {law}
+fix             gr all tdem/grate {law} rows 2 bar_length 0.1 bar_height 0.03 bar_thickness 0.012 bar_gap 0.006 &
+                step_height 0.01 width 0.054 row_group -1 0 profile sinusoidal stroke 0.03 period 0.1 energy yes
+fix             grav all gravity 9.81 vector 0 0 -1
+fix             nve all nve/sphere
+timestep        2e-5
+compute         E all tdem/energy
+compute         A all tdem/energy
+compute         S all reduce sum c_A[5] c_A[8]
+thermo_style    custom step c_E[1] c_E[2] c_E[3] c_E[4] c_E[5] c_E[6] c_E[7] c_E[8] c_E[9] c_E[10] c_S[1] c_S[2]
+thermo_modify   format float %.17g
+thermo          500
+run             10000
+"""
+atoms = "\n".join("create_atoms 1 single %r %r %r units box" % (x, y, z)
+                   for x in (0.02, 0.035, 0.05, 0.065, 0.08, 0.12, 0.135, 0.15, 0.165, 0.18)
+                   for y in (-0.018, 0.0, 0.018) for z in (0.006, 0.018, 0.03))
+GLAW = "normal lsd restitution 0.3 1e-3 tangential cundall_strack 0.8 0.4"
+for np_, newton in ((1, "off"), (2, "on")):
+    text = GRATE.format(newton=newton, processors="processors 2 1 1" if np_ == 2 else "", atoms=atoms, law=GLAW)
+    _, out = lc.run(EXE, text, lc.workdir("energy_grate"), np_=np_, mpirun=args["mpirun"])
+    rows = [list(map(float, r.split())) for r in lc.thermo_blocks(out)[1:]]
+    last = rows[-1]
+    scale = abs(rows[0][7] - last[7]) + abs(last[8]) + last[5]
+    res = max(abs(r[10]) for r in rows)
+    print("grate np %d newton %-3s: taken %.9e (elastic %.3e damping %.3e tangential %.3e), bars' work %.6e, "
+          "potential %.6e -> %.6e, residual max %.2e of the energy moved" % (np_, newton, last[5], last[1], last[2],
+                                                                           last[3], last[8], rows[0][7], last[7],
+                                                                           res / scale))
+    chk.check(last[8] > 0.0 and last[3] > 0.0 and res < 1e-11 * scale,
+              "grate stroke np %d newton %s: the moving bars did work (%.3e J), balance residual %.2e of the "
+              "energy moved < 1e-11 over 10000 steps" % (np_, newton, last[8], res / scale))
+    chk.check(abs(last[11] - last[5]) < 1e-13 * scale and abs(last[12] - last[8]) < 1e-13 * scale,
+              "grate stroke np %d newton %s: the per-atom array summed equals the vector (taken, bars' work)"
+              % (np_, newton))
 
 # 3. a settling bed on a frozen layer of spheres, periodic sideways, under gravity
 BED = """
@@ -239,10 +365,10 @@ fix             nve all nve/sphere
 timestep        1e-5
 compute         E all tdem/energy
 compute         A all tdem/energy
-compute         S all reduce sum c_A[1] c_A[2] c_A[3] c_A[4] c_A[5] c_A[6] c_A[7]
+compute         S all reduce sum c_A[1] c_A[2] c_A[3] c_A[4] c_A[5] c_A[6] c_A[7] c_A[8]
 dump            loc all local {every} contacts.txt c_A[1] c_A[2] c_A[7]
 dump_modify     loc format float %.17g
-thermo_style    custom step c_E[1] c_E[2] c_E[3] c_E[4] c_E[5] c_E[6] c_E[7] c_E[8] c_E[9] c_S[1] c_S[2] c_S[3] c_S[4] c_S[5] c_S[6] c_S[7]
+thermo_style    custom step c_E[1] c_E[2] c_E[3] c_E[4] c_E[5] c_E[6] c_E[7] c_E[8] c_E[9] c_E[10] c_S[1] c_S[2] c_S[3] c_S[4] c_S[5] c_S[6] c_S[7] c_S[8]
 thermo_modify   format float %.17g
 thermo          {every}
 {body}
@@ -281,7 +407,7 @@ def bed(np_, newton, body, every=500, data=None):
     _, out = lc.run(EXE, text, d, np_=np_, mpirun=args["mpirun"])
     rows = [list(map(float, r.split())) for r in lc.thermo_blocks(out) if not r.startswith("Step")]
     local = local_sums(os.path.join(d, "contacts.txt"))
-    for r in rows:  # column 17: the local array's last column summed (the current contacts)
+    for r in rows:  # column 19: the local array's last column summed (the current contacts)
         r.append(local.get(int(r[0]), 0.0))
     return rows, d
 
@@ -292,7 +418,7 @@ for np_, newton in ((1, "off"), (1, "on"), (2, "on"), (2, "off")):
     rows, _ = bed(np_, newton, "run %d" % NSTEP)
     runs[(np_, newton)] = rows
     released = rows[0][7] - rows[-1][7]
-    res = max(abs(r[9]) for r in rows)
+    res = max(abs(r[10]) for r in rows)
     last = rows[-1]
     print("bed np %d newton %-3s: taken %.9e (elastic %.3e damping %.3e tangential %.3e rolling %.3e), "
           "potential released %.6e, K~ %.3e, residual max %.2e of it" % (np_, newton, last[5], last[1], last[2],
@@ -303,8 +429,8 @@ for np_, newton in ((1, "off"), (1, "on"), (2, "on"), (2, "off")):
               % (np_, newton, last[5], released))
     chk.check(res < 1e-11 * released, "bed np %d newton %s: balance residual %.2e of the released potential energy "
               "< 1e-11 over %d steps" % (np_, newton, res / released, NSTEP))
-    peratom = max(abs(r[10 + k] - r[1 + k]) for r in rows for k in range(5)) / last[5]
-    bodies = max(abs(r[15] - r[6]) + abs(r[16] - r[7]) for r in rows) / released
+    peratom = max(abs(r[11 + k] - r[1 + k]) for r in rows for k in range(5)) / last[5]
+    bodies = max(abs(r[16] - r[6]) + abs(r[17] - r[7]) for r in rows) / released
     chk.check(peratom < 1e-12 and bodies < 1e-12, "bed np %d newton %s: the per-atom array summed equals the "
               "global vector (%.1e, K~ and potential %.1e)" % (np_, newton, peratom, bodies))
 # 1 and 2 ranks, newton on and off, on the first steps (before round-off differences of the sums
@@ -315,10 +441,10 @@ for np_, newton in ((1, "off"), (1, "on"), (2, "on"), (2, "off")):
     short[(np_, newton)] = rows[-1]
 ref = short[(1, "off")]
 for key, row in short.items():
-    # 1-7 the vector, 17 the current contacts' rows of the local array summed (each contact once)
-    dev = max(abs(row[k] - ref[k]) for k in list(range(1, 8)) + [17]) / ref[5]
-    chk.check(dev < 1e-9 and row[17] > 0.0, "bed np %d newton %s: after 2000 steps the totals and the local rows "
-              "summed (%.6e) equal np 1 newton off to %.1e (of the energy taken)" % (key[0], key[1], row[17], dev))
+    # 1-7 the vector, 19 the current contacts' rows of the local array summed (each contact once)
+    dev = max(abs(row[k] - ref[k]) for k in list(range(1, 8)) + [19]) / ref[5]
+    chk.check(dev < 1e-9 and row[19] > 0.0, "bed np %d newton %s: after 2000 steps the totals and the local rows "
+              "summed (%.6e) equal np 1 newton off to %.1e (of the energy taken)" % (key[0], key[1], row[19], dev))
 
 # a restart in the middle: read_restart and run continues the totals of the run that wrote it
 # (a run split at the same step: LAMMPS's own restart reproduces that trajectory bit for bit)

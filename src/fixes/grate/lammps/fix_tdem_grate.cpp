@@ -4,6 +4,8 @@
 
 #include "fix_tdem_grate.h"
 
+#include "contact/energy.h"
+
 #include "atom.h"
 #include "comm.h"
 #include "domain.h"
@@ -89,6 +91,11 @@ struct GrateRunner {
   FixTDEMGrate *f;
   template <int M, int E, int S, int TL = 0> void run() { f->template eval<M, E, S, TL>(); }
 };
+// the energy accounting: the law at run time, the tangential law at compile time
+struct GrateRunnerEnergy {
+  FixTDEMGrate *f;
+  template <int M, int E, int S, int TL = 0> void run() { f->template eval<-1, -1, -1, TL, true>(); }
+};
 }  // namespace
 
 void FixTDEMGrate::post_force(int /*vflag*/)
@@ -105,7 +112,10 @@ void FixTDEMGrate::post_force(int /*vflag*/)
   boxes_ = grate_->boxes(t);
   force_flag = 0;
   fbar[0] = fbar[1] = fbar[2] = 0.0;
-  tdem_lammps::dispatch(true, law.mode, law.end, law.slip, law.tlaw, GrateRunner{this});
+  if (energy_on)
+    tdem_lammps::dispatch(false, law.mode, law.end, law.slip, law.tlaw, GrateRunnerEnergy{this});
+  else
+    tdem_lammps::dispatch(true, law.mode, law.end, law.slip, law.tlaw, GrateRunner{this});
 
   if (vtk_every && (update->setupflag || update->ntimestep % vtk_every == 0)) write_vtk(t);
 }
@@ -130,7 +140,7 @@ inline bool within(const tg::Box &b, const double *p, double eps, int per_axis, 
 }
 }  // namespace
 
-template <int M, int E, int S, int TL>
+template <int M, int E, int S, int TL, bool EN>
 __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
 {
   const bool history_update = !update->setupflag;
@@ -226,6 +236,7 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
     if (cand.empty()) {  // no contact: free the slots still held
       for (int s = 0; s < max_contacts; ++s)
         if (sl[s * slot_size] >= 0.0) {
+          if constexpr (EN) energy_free(i, sl + s * slot_size, history_update);
           sl[s * slot_size] = -1.0;
           for (int m = 1; m < slot_size; ++m) sl[s * slot_size + m] = 0.0;
         }
@@ -280,6 +291,7 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
     }
     for (int s = 0; s < max_contacts; ++s)
       if (!used[s] && sl[s * slot_size] >= 0.0) {
+        if constexpr (EN) energy_free(i, sl + s * slot_size, history_update);
         sl[s * slot_size] = -1.0;
         for (int m = 1; m < slot_size; ++m) sl[s * slot_size + m] = 0.0;
       }
@@ -311,16 +323,79 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
       const double wr3 = rad * omg[i][2] * rinv;
 
       double ccel, fs[3];
+      [[maybe_unused]] tdem::NormalResult<double> nres{};
       tdem_lammps::evaluate_contact<M, E, S, TL>(law, meff, dx, dy, dz, r, rinv, rsqinv,
                                                  c.overlap, vr1, vr2, vr3, wr1, wr2, wr3, dt,
                                                  history_update, shear, ccel, fs, rad, 0.0, omg[i],
-                                                 nullptr);
+                                                 nullptr, nullptr, EN ? &nres : nullptr);
+      if constexpr (EN) {
+        // energy: the parts over the sphere's motion relative to the box, the box's work over its
+        // own motion (as fix tdem/wall/gran energy yes); at set-up the loads only
+        namespace en = tdem::energy;
+        double *es = shear + law_history;
+        en::Compact<double> now;
+        now.n[0] = dx * rinv, now.n[1] = dy * rinv, now.n[2] = dz * rinv;
+        now.fe = nres.elastic;
+        now.fd = ccel * r - nres.elastic;
+        now.ci = rad;
+        for (int k = 0; k < 3; k++) now.ft[k] = fs[k];
+        const double vb[3] = {bx.velocity.x, bx.velocity.y, bx.velocity.z};
+        if (history_update) {
+          double fsum = 0.0;
+          for (int k = 0; k < 3; k++)
+            fsum += ((es[3] + es[4]) * es[k] + es[5 + k] + (now.fe + now.fd) * now.n[k] + now.ft[k]) * vb[k];
+          sl[max_contacts * slot_size + en::kParts] += 0.5 * fsum * dt;
+          static const double rest[3] = {0.0, 0.0, 0.0};
+          en::step(es, now, en::pair_motion(v[i], vb, omg[i], rest, dt));
+        } else {
+          en::save(now, es);
+        }
+      }
       double fw[3];
       tdem_lammps::add_wall_force(f[i], torque[i], dx, dy, dz, ccel, fs, rinv, rad, fw);
       fbar[0] -= fw[0];
       fbar[1] -= fw[1];
       fbar[2] -= fw[2];
     }
+  }
+}
+
+// energy yes: the first step without the contact of slot (box index, history) of atom i: the last
+// half step of its loads (relative to the box; the box's work over its own motion), then its
+// energy to the row's tail (the caller frees the slot)
+void FixTDEMGrate::energy_free(int i, double *slot, bool advance)
+{
+  namespace en = tdem::energy;
+  double *es = slot + 1 + law_history;
+  double *tail = rows_[i] + max_contacts * slot_size;
+  if (advance && (es[0] != 0.0 || es[1] != 0.0 || es[2] != 0.0)) {
+    const tdem::grate::Box &bx = boxes_[static_cast<int>(slot[0])];
+    const double vb[3] = {bx.velocity.x, bx.velocity.y, bx.velocity.z};
+    double fsum = 0.0;
+    for (int k = 0; k < 3; k++) fsum += ((es[3] + es[4]) * es[k] + es[5 + k]) * vb[k];
+    tail[en::kParts] += 0.5 * fsum * update->dt;
+    static const double rest[3] = {0.0, 0.0, 0.0};
+    en::step(es, en::Compact<double>{}, en::pair_motion(atom->v[i], vb, atom->omega[i], rest, update->dt));
+  }
+  for (int p = 0; p < en::kParts; p++) tail[p] -= es[en::kCompactSize + p];
+}
+
+void FixTDEMGrate::energy_sums(double *parts, double *work, double **peratom, int wall_column) const
+{
+  namespace en = tdem::energy;
+  if (!energy_on) return;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit)) continue;
+    const double *row = rows_[i], *tail = row + max_contacts * slot_size;
+    for (int p = 0; p < en::kParts; p++) {
+      double taken = tail[p];
+      for (int s = 0; s < max_contacts; s++)
+        if (row[s * slot_size] >= 0.0) taken -= row[s * slot_size + 1 + law_history + en::kCompactSize + p];
+      parts[p] += taken;
+      if (peratom) peratom[i][p] += taken;
+    }
+    *work += tail[en::kParts];
+    if (peratom) peratom[i][wall_column] += tail[en::kParts];
   }
 }
 
@@ -364,6 +439,7 @@ void FixTDEMGrate::set_arrays(int i)
     rows_[i][s * slot_size] = -1.0;
     for (int m = 1; m < slot_size; m++) rows_[i][s * slot_size + m] = 0.0;
   }
+  for (int m = max_contacts * slot_size; m < width_; m++) rows_[i][m] = 0.0;  // energy: the tail
 }
 
 // global restart: the grate time origin and the layout of the per-atom slots
@@ -412,5 +488,9 @@ void FixTDEMGrate::unpack_restart(int nlocal, int nth)
     for (int q = 0; q < slot_size; q++) rows_[nlocal][k * slot_size + q] = src[q];
     ++k;
   }
+  // energy yes: the tail after the slots (the ended contacts' energy, the bars' work)
+  const int tail = width_ - max_contacts * slot_size;
+  if (tail > 0 && count - stored * slot_size == tail)
+    for (int q = 0; q < tail; q++) rows_[nlocal][max_contacts * slot_size + q] = rec[1 + stored * slot_size + q];
 }
 

@@ -3,7 +3,7 @@
 // physics_reference.md 7.1, docs/grate.md for the core, docs/lammps/fix_tdem_grate.md for the syntax).
 //
 //   fix ID group tdem/grate <law: as fix tdem/wall/gran> <grate keywords> <motion keywords>
-//       [vtk N prefix] [max_contacts K]
+//       [vtk N prefix] [max_contacts K] [energy no|yes]
 //
 // The bars (and the optional side walls) are the oriented boxes of tdem::grate::Grate::boxes(t)
 // at the grate time t = (step - step of definition) * dt. Every owned atom of the group is tested
@@ -16,6 +16,11 @@
 // Interface for other tdem styles (compute tdem/mixing ...): extract("tdem_grate") ->
 // const tdem::grate::Grate *, extract("tdem_grate_time") -> double * (grate time of the last
 // force evaluation), both dim 0.
+//
+// energy yes: every contact accounts the work of its force parts over the sphere's motion relative
+// to its box, and the box's work on the sphere over the box's own motion, for compute tdem/energy
+// (src/contact/energy.h, tdem_lammps_energy.h); each slot then ends with energy::kSlots, and the
+// row with the ended contacts' energy per part and the bars' work.
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -32,6 +37,7 @@ FixStyle(tdem/grate,FixTDEMGrate);
 #include "fixes/vtk/vtk_files.h"
 #include "tdem_lammps_law.h"
 #include "contact_host.h"
+#include "tdem_lammps_energy.h"
 
 #include <memory>
 #include <string>
@@ -40,7 +46,7 @@ FixStyle(tdem/grate,FixTDEMGrate);
 namespace LAMMPS_NS {
 
 // per-atom contact slots: tdem::host::PerAtomRows (rows_, width_ values per atom)
-class FixTDEMGrate : public tdem::host::PerAtomRows<Fix> {
+class FixTDEMGrate : public tdem::host::PerAtomRows<Fix>, public tdem_lammps::EnergySource {
  public:
   FixTDEMGrate(class LAMMPS *, int, char **);
   ~FixTDEMGrate() override;
@@ -58,7 +64,12 @@ class FixTDEMGrate : public tdem::host::PerAtomRows<Fix> {
   void unpack_restart(int, int) override;
   void reset_dt() override;
 
-  template <int M, int E, int S, int TL> void eval();
+  // EN: the energy accounting (energy yes)
+  template <int M, int E, int S, int TL, bool EN = false> void eval();
+
+  // energy yes (tdem_lammps_energy.h)
+  bool energy_enabled() const override { return energy_on != 0; }
+  void energy_sums(double *parts, double *work, double **peratom, int wall_column) const override;
 
   // read-only views for other tdem styles
   const tdem_lammps::LawCoeffs &grate_law() const { return law; }
@@ -85,6 +96,11 @@ class FixTDEMGrate : public tdem::host::PerAtomRows<Fix> {
   int max_contacts;   // K history slots per atom
   int size_history;   // the law's history values per contact
   int slot_size;      // 1 + size_history (box index, history)
+  int energy_on;      // energy yes: size_history = the law's + energy::kSlots, and a tail per row
+  int law_history;    // the law's history values per contact
+  // energy yes: the last step of the contact in slot (box index, history) of atom i, its energy to
+  // the row's tail (cold: once per contact)
+  [[gnu::cold, gnu::noinline]] void energy_free(int i, double *slot, bool advance);
   // rows_: per atom K x (box index or -1, history), width_ = K * slot_size values
 
   int vtk_every;

@@ -17,6 +17,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include "contact/energy.h"
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
@@ -31,7 +33,7 @@ const char *GRATE_KEYWORDS =
     "rows, bar_length, bar_height, bar_thickness, bar_gap, step_height, overlap, declination, "
     "width, side_walls, wall_height, wall_thickness, type, frame, origin, row_group, group_phase, "
     "profile, stroke, period, frequency, t_start, dwell_out, dwell_home, forward_share, ramp, vtk, "
-    "max_contacts";
+    "max_contacts, energy";
 
 bool parse_double(const char *s, double &v)
 {
@@ -81,6 +83,7 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
   // ---- grate and motion keywords
   tg::GrateParams gp;
   max_contacts = 4;
+  energy_on = 0;
   vtk_every = 0;
   bool frame_given = false;
   auto value = [&](const std::string &key, int k) -> const char * {
@@ -220,6 +223,12 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
       vtk_every = static_cast<int>(n);
       vtk_prefix = value(key, 2);
       iarg += 3;
+    } else if (key == "energy") {
+      const std::string val = value(key, 1);
+      if (val != "yes" && val != "no")
+        error->all(FLERR, where + ": keyword 'energy' = '" + val + "' is not allowed; allowed: no, yes");
+      energy_on = val == "yes";
+      iarg += 2;
     } else if (key == "max_contacts") {
       const long k = integer(key, 1);
       if (k < 1 || k > 64)
@@ -290,8 +299,10 @@ FixTDEMGrate::FixTDEMGrate(LAMMPS *lmp, int narg, char **arg) :
   extlist_store[0] = extlist_store[1] = extlist_store[2] = 1;
   extlist = extlist_store.data();
 
+  law_history = size_history;
+  if (energy_on) size_history += tdem::energy::kSlots;
   slot_size = 1 + size_history;
-  rows_init(max_contacts * slot_size, "tdem/grate:slots");
+  rows_init(max_contacts * slot_size + (energy_on ? tdem::energy::kParts + 1 : 0), "tdem/grate:slots");
   boxes_ = grate_->boxes(0.0);
   // half extents of the axis-aligned bounding box of each box (the boxes only translate)
   for (const auto &b : boxes_)
