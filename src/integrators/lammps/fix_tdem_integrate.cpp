@@ -61,6 +61,8 @@ FixTDEMIntegrate::FixTDEMIntegrate(LAMMPS *lmp, int narg, char **arg) :
   if (!what.empty()) error->all(FLERR, where + ": " + what);
   scheme = fa.scheme;
   rotation = fa.rotation ? 1 : 0;
+  energy_form_[0] = ti::energy_form(scheme);
+  energy_form_[1] = scheme == ti::Scheme::velocity_verlet_sync || scheme == ti::Scheme::velocity_verlet_ab2;
 
   ti::dispatch(scheme, [&](auto tag) {
     constexpr ti::Scheme S = decltype(tag)::value;
@@ -396,4 +398,11 @@ void FixTDEMIntegrate::restart(char *buf)
   }
   dt_hist = list[1];
   dt_prev = list[3];
+}
+
+void *FixTDEMIntegrate::extract(const char *name, int &dim)
+{
+  dim = 0;
+  if (std::strcmp(name, "tdem_energy_form") == 0) return energy_form_;
+  return nullptr;
 }

@@ -61,9 +61,14 @@ class FixTDEMIntegrate : public tdem::host::PerAtomRows<Fix> {
   int history_doubles() const { return nhist_t + nhist_r; }
   // the scheme in use (for fix tdem/timestep)
   tdem::integrators::Scheme scheme_in_use() const { return scheme; }
+  // extract("tdem_energy_form", dim) -> int[2] (dim 0), for compute tdem/energy: the scheme's
+  // integrators::energy_form, and 1 where its force sees a predicted velocity (velocity_verlet_sync,
+  // velocity_verlet_ab2: a pair style then sees that velocity, not the step's drift)
+  void *extract(const char *, int &) override;
 
  private:
   tdem::integrators::Scheme scheme;
+  int energy_form_[2];
   int rotation;          // 1: integrate omega as well
   int nhist_t, nhist_r;  // history doubles of the translation / rotation channel
   int nlast;             // 6 (last acceleration and angular acceleration) or 0 (velocity_verlet)

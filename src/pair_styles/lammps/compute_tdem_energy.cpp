@@ -24,10 +24,12 @@ namespace en = tdem::energy;
 ComputeTDEMEnergy::ComputeTDEMEnergy(LAMMPS *lmp, int narg, char **arg) : Compute(lmp, narg, arg)
 {
   form = en::Form::kick_drift_kick;
+  form_given = false;
   for (int a = 3; a < narg; a += 2) {
     if (std::strcmp(arg[a], "form") != 0)
       error->all(FLERR, std::string("compute tdem/energy: unknown keyword '") + arg[a] + "' (it takes form)");
     if (a + 1 >= narg) error->all(FLERR, "compute tdem/energy: form needs a value, kick_drift_kick or kick_then_drift");
+    form_given = true;
     if (std::strcmp(arg[a + 1], "kick_drift_kick") == 0)
       form = en::Form::kick_drift_kick;
     else if (std::strcmp(arg[a + 1], "kick_then_drift") == 0)
@@ -88,6 +90,28 @@ void ComputeTDEMEnergy::init()
       for (const Fix *fx : tdem_lammps::compat::fixes_by_style(modify, style))
         error->warning(FLERR, std::string("compute tdem/energy: the work of fix ") + fx->id + " (" + fx->style +
                                   ") is not in the balance; c_" + id + "[10] will not stay at round-off");
+  // the integrator's form (fix tdem/integrate; fix nve/sphere kicks, drifts and kicks again)
+  if (!form_given) {
+    form = en::Form::kick_drift_kick;
+    int seen = -2;
+    std::string which;
+    for (const Fix *fx : tdem_lammps::compat::fixes_by_style(modify, "^tdem/integrate")) {
+      int dim = 0;
+      const int *ef = static_cast<const int *>(const_cast<Fix *>(fx)->extract("tdem_energy_form", dim));
+      if (!ef) continue;
+      if (seen != -2 && ef[0] != seen)
+        error->all(FLERR, std::string("compute tdem/energy: the fixes tdem/integrate ") + which + " and " + fx->id +
+                              " move the bodies in different ways; give the form keyword");
+      seen = ef[0], which = fx->id;
+      if (ef[0] == 1) form = en::Form::kick_then_drift;
+      if (comm->me == 0 && (ef[0] < 0 || ef[1]))
+        error->warning(FLERR, std::string("compute tdem/energy: the scheme of fix ") + fx->id +
+                                  (ef[0] < 0 ? " has no exact discrete kinetic energy"
+                                             : "'s force sees a predicted velocity, not the step's drift") +
+                                  ": c_" + id + "[10] will not stay at round-off (the scheme's energy error, and "
+                                  "the contacts' work over the velocity the force sees rather than the step's drift)");
+    }
+  }
   // fix gravity: its potential energy -m g . x (x unwrapped)
   gvec = nullptr;
   gravity_groupbit = 0;

@@ -3,6 +3,7 @@
 // (docs/lammps/compute_tdem_energy.md, docs/energy.md).
 //
 //   compute ID group tdem/energy [form kick_drift_kick|kick_then_drift]
+//   (default: the form of the scheme of fix tdem/integrate, else kick_drift_kick as fix nve/sphere)
 //
 // Global vector (extensive, J): 1-4 the energy the contacts (of pair tdem/gran and of the fixes
 // with energy yes, e.g. fix tdem/wall/gran) took out of the motion per part (normal_elastic,
@@ -49,6 +50,7 @@ class ComputeTDEMEnergy : public Compute {
 
  private:
   tdem::energy::Form form;
+  bool form_given;  // the form keyword (else: from fix tdem/integrate, or kick_drift_kick)
   class PairTDEMGran *pair;
   std::vector<const tdem_lammps::EnergySource *> sources;  // fixes with energy yes
   const double *gvec;  // fix gravity's acceleration vector (nullptr: no gravity)
