@@ -4,10 +4,11 @@
 // it is not an input-script command.
 //
 // Each atom keeps the energy the ended contacts it took part in took out of the motion, per part
-// of the force (tdem::energy::Part), half of every contact's to each of its two atoms. The values
-// move with their atom between ranks and go into restart files with it. A contact that ends on a
-// rank where its partner is a ghost (newton_pair on) adds the partner's half to the ghost's row;
-// fold() then sends the ghost rows to their owners (reverse communication) and clears them.
+// of the force (tdem::energy::Part), half of every contact's to each of its two atoms: a row of
+// tdem::host::PerAtomRows, which moves with its atom between ranks and goes into restart files with
+// it. A contact that ends on a rank where its partner is a ghost (newton_pair on) adds the
+// partner's half to the ghost's row; fold() then sends the ghost rows to their owners (reverse
+// communication) and clears them.
 
 #ifdef FIX_CLASS
 // clang-format off
@@ -19,39 +20,28 @@ FixStyle(TDEM/ENERGY/STORE,FixTDEMEnergyStore);
 #define TDEM_LMP_FIX_TDEM_ENERGY_STORE_H
 
 #include "fix.h"
+#include "pair_styles/per_atom_rows.h"
 
 #include "contact/energy.h"
 
 namespace LAMMPS_NS {
 
-class FixTDEMEnergyStore : public Fix {
+class FixTDEMEnergyStore : public tdem::host::PerAtomRows<Fix> {
  public:
   static constexpr int kValues = tdem::energy::kParts;
   FixTDEMEnergyStore(class LAMMPS *, int, char **);
   ~FixTDEMEnergyStore() override;
   int setmask() override { return 0; }
-  void grow_arrays(int) override;
-  void copy_arrays(int, int, int) override;
-  int pack_exchange(int, double *) override;
-  int unpack_exchange(int, double *) override;
-  int pack_restart(int, double *) override;
-  void unpack_restart(int, int) override;
-  int size_restart(int) override { return kValues + 1; }
-  int maxsize_restart() override { return kValues + 1; }
   int pack_reverse_comm(int, int, double *) override;
   void unpack_reverse_comm(int, int *, double *) override;
-  double memory_usage() override;
+  double memory_usage() override { return rows_memory(); }
 
   // the row of atom i (owned or ghost) [J], one value per part
-  double *row(int i) { return value[i]; }
+  double *row(int i) { return rows_[i]; }
   // before a contact loop: the ghost rows are zero (and as many as the atoms have)
   void clear_ghosts();
   // after it: the ghost rows added to their owners' (newton_pair on), then zero
   void fold();
-
- private:
-  double **value;
-  int nmax_rows;
 };
 
 }  // namespace LAMMPS_NS
