@@ -170,10 +170,11 @@ void PairTDEMGran::init_style()
        utlaw != tdem_lammps::TLAW_CUNDALL_STRACK || energy_on)
           ? 1
           : 0;
-  // energy yes: a contact that ends at a step that rebuilds the neighbour list keeps its history
-  // (FixNeighHistory drops the history of pairs apart at the rebuild unless beyond_contact), so
-  // that its last half step and its work reach the store
-  beyond_contact = energy_on ? 1 : 0;
+  // energy yes and grid_correction: a contact that ends at a step that rebuilds the neighbour list
+  // keeps its history (FixNeighHistory drops the history of pairs apart at the rebuild unless
+  // beyond_contact), so that its last half step and its work reach the store, and the end's
+  // impulse of the correction is applied
+  beyond_contact = (energy_on || gc_any) ? 1 : 0;
   if (energy_on && gc_any)
     error->all(FLERR, "pair tdem/gran: energy yes with grid_correction on is not supported in LAMMPS yet "
                       "(tdem-collide --energy on accounts the correction's force); turn one of them off");
