@@ -42,6 +42,8 @@ kinetic energy (thermo ke plus the rotational energy from the velocities).
    closes the balance: kinetic energy lost = taken - walls' work (1e-12).
 2c. A grate stroke (fix tdem/grate energy yes, a fixed and a moving row, gravity, 1 and 2 ranks):
    the bars' work c_E[8] > 0 and the residual below 1e-11 of the energy moved.
+5. The example input_scripts/lammps/in.tdem_energy (shortened) runs on 2 ranks with its residual at
+   round-off (1e-11 of the potential energy released) and work done by its wiggling floor.
 4. Bad input: compute tdem/energy without energy yes, a bad energy value, energy with
    grid_correction give ERROR lines.
 """
@@ -494,5 +496,21 @@ for np_ in (1, 2):
               "run's totals to %.1e" % (np_, cont[0][5], dev))
     # a control: without the store of ended contacts the restart would lose their share
     chk.check(cont[0][5] > 0.0 and at_restart[1] > 0.0, "restart np %d: nonzero totals at the restart" % np_)
+
+# 5. the example input_scripts/lammps/in.tdem_energy (shortened to 60000 steps) on 2 ranks: its balance
+# residual stays at round-off, the wiggling floor does work
+ex = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "input_scripts", "lammps",
+                  "in.tdem_energy")
+text = open(ex).read().replace("run             200000", "run             60000").replace(
+    "thermo_modify   format float %.6g", "thermo_modify   format float %.17g")
+_, out = lc.run(EXE, text, lc.workdir("energy_example"), np_=2, mpirun=args["mpirun"])
+rows = [list(map(float, r.split())) for r in lc.thermo_blocks(out)[1:]]
+released = rows[0][6] - rows[-1][6]
+res = max(abs(r[8]) for r in rows)
+print("example in.tdem_energy, 2 ranks: taken %.6e J, potential released %.6e J, floor's work %.6e J, residual max "
+      "%.2e of the potential released" % (rows[-1][5], released, rows[-1][7], res / released))
+chk.check(released > 0 and rows[-1][7] > 0 and res < 1e-11 * released,
+          "example in.tdem_energy: the floor did work (%.3e J), residual %.2e of the potential released"
+          % (rows[-1][7], res / released))
 
 sys.exit(chk.done())
