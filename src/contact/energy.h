@@ -205,6 +205,26 @@ TDEM_KERNEL void step(T* s, const Compact<T>& now, const Motion<T>& d) noexcept 
   w[rolling] += T(0.5) * (dot(s + 10, roll) + dot(now.tr, roll));
   save(now, s);
 }
+// One step of a contact with a wall that moves with velocity vw (its points all alike over the
+// step): step() over d, the motion of the sphere relative to the wall, and the wall's own work on
+// the sphere over h vw, the trapezoid of the whole contact force (F_n + F_n+1) . h vw / 2, added to
+// wall. The two add up to the force's work over the sphere's own motion. A contact's last step
+// (the first without contact) passes now = Compact{}.
+template <class T>
+TDEM_KERNEL void wall_step(T* s, const Compact<T>& now, const Motion<T>& d, const T* vw, T h, T& wall) noexcept {
+  T f = T(0);
+  for (int k = 0; k < 3; ++k)
+    f += ((s[3] + s[4]) * s[k] + s[5 + k] + (now.fe + now.fd) * now.n[k] + now.ft[k]) * vw[k];
+  wall += T(0.5) * f * h;
+  step(s, now, d);
+}
+// A contact's end: the energy its parts took out of the motion (-W) added to taken[kParts], its
+// slots zeroed.
+template <class T>
+TDEM_KERNEL void close(T* s, T* taken) noexcept {
+  for (int p = 0; p < kParts; ++p) taken[p] -= s[kCompactSize + p];
+  for (int m = 0; m < kSlots; ++m) s[m] = T(0);
+}
 // The motion of a pair over a step from the velocities of the step's drift (velocity Verlet: the
 // half-step velocities a host's pair style sees): h (v_i - v_j), h w_i, h w_j. A moving wall's
 // own displacement is the wall's work, not the contact's: pass the wall's velocity as v_j and

@@ -206,6 +206,34 @@ TEST(Energy, HostSlotsAreTheSameFromEitherSide) {
   EXPECT_EQ(std::memcmp(&x, &y, sizeof x), 0);
 }
 
+// A contact with a moving wall: the parts' work over the motion relative to the wall and the wall's
+// work over its own motion add up to the work over the sphere's own motion (a wall at rest: step
+// with the sphere's motion); close() moves the parts' work into the taken sums and zeroes the slots.
+TEST(Energy, WallStepSplitsTheWorkOnTheSphere) {
+  double a[energy::kSlots] = {}, b[energy::kSlots] = {}, wall = 0.0, rest_wall = 0.0;
+  const double h = 1e-3, vw[3] = {0.3, -0.1, 0.2}, zero[3] = {0.0, 0.0, 0.0};
+  for (int n = 1; n <= 9; ++n) {
+    energy::Compact<double> now;
+    if (n < 9) {
+      now.n[2] = 1.0, now.fe = 1.0 + 0.1 * n, now.fd = 0.2, now.ft[0] = -0.3 * n, now.ft[1] = 0.05;
+      now.ci = 0.004, now.tr[1] = 1e-4;
+    }
+    const double v[3] = {0.1 * n, 0.2, -0.4 + 0.05 * n}, w[3] = {3.0, -1.0, 0.5 * n};
+    energy::wall_step(a, now, energy::pair_motion(v, vw, w, zero, h), vw, h, wall);
+    energy::wall_step(b, now, energy::pair_motion(v, zero, w, zero, h), zero, h, rest_wall);  // own motion
+  }
+  double sum_a = wall, sum_b = 0.0;
+  for (int p = 0; p < energy::kParts; ++p) sum_a += a[energy::kCompactSize + p], sum_b += b[energy::kCompactSize + p];
+  EXPECT_GT(std::fabs(wall), 1e-6);
+  EXPECT_EQ(rest_wall, 0.0);
+  EXPECT_NEAR(sum_a, sum_b, 1e-15);
+  double taken[energy::kParts] = {};
+  const double w0 = a[energy::kCompactSize];
+  energy::close(a, taken);
+  EXPECT_EQ(taken[0], -w0);
+  for (int m = 0; m < energy::kSlots; ++m) EXPECT_EQ(a[m], 0.0);
+}
+
 // Head-on LSD impact: the work taken out of the motion equals the kinetic energy lost to round-off
 // (velocity_verlet_ab2), the damper's share equals the closed form 1/2 m v0^2 (1 - e^2) up to the
 // grid error, and the spring returns what it took up to it. The correction (its extra force in the

@@ -393,22 +393,13 @@ template <int M, int E, int S, int TL, int C> __attribute__((flatten, noinline))
       // work on the sphere over the wall's own motion (trapezoid of the force on the sphere); at
       // set-up the loads only
       namespace en = tdem::energy;
-      en::Compact<double> now;
-      now.n[0] = dx * rinv, now.n[1] = dy * rinv, now.n[2] = dz * rinv;
-      now.fe = nres.elastic;
-      now.fd = ccel * r - nres.elastic;
-      now.ci = rad;
-      for (int k = 0; k < 3; k++) now.ft[k] = fs[k], now.tr[k] = law.roll ? troll[k] : 0.0;
-      if (history_update) {
-        double fsum = 0.0;
-        for (int k = 0; k < 3; k++)
-          fsum += ((es[3] + es[4]) * es[k] + es[5 + k] + (now.fe + now.fd) * now.n[k] + now.ft[k]) * vwall[k];
-        es[en::kSlots + en::kParts] += 0.5 * fsum * dt;
-        static const double rest[3] = {0.0, 0.0, 0.0};
-        en::step(es, now, en::pair_motion(v[i], vwall, omg[i], rest, dt));
-      } else {
+      const en::Compact<double> now =
+          tdem_lammps::contact_loads(dx, dy, dz, rinv, ccel * r, nres.elastic, fs, rad, 0.0, law.roll ? troll : nullptr);
+      static const double rest[3] = {0.0, 0.0, 0.0};
+      if (history_update)
+        en::wall_step(es, now, en::pair_motion(v[i], vwall, omg[i], rest, dt), vwall, dt, es[en::kSlots + en::kParts]);
+      else
         en::save(now, es);
-      }
     }
 
     double fw[3];
@@ -470,15 +461,11 @@ void FixTDEMWallGran::gc_separation_wall(int i, const double *shear, const doubl
 void FixTDEMWallGran::energy_end(int i, double *slots, const double *vwall, bool update)
 {
   namespace en = tdem::energy;
-  if (update) {
-    double fsum = 0.0;
-    for (int k = 0; k < 3; k++) fsum += ((slots[3] + slots[4]) * slots[k] + slots[5 + k]) * vwall[k];
-    slots[en::kSlots + en::kParts] += 0.5 * fsum * dt;
-    static const double rest[3] = {0.0, 0.0, 0.0};
-    en::step(slots, en::Compact<double>{}, en::pair_motion(atom->v[i], vwall, atom->omega[i], rest, dt));
-  }
-  for (int p = 0; p < en::kParts; p++) slots[en::kSlots + p] -= slots[en::kCompactSize + p];
-  for (int m = 0; m < en::kSlots; m++) slots[m] = 0.0;
+  static const double rest[3] = {0.0, 0.0, 0.0};
+  if (update)
+    en::wall_step(slots, en::Compact<double>{}, en::pair_motion(atom->v[i], vwall, atom->omega[i], rest, dt), vwall,
+                  dt, slots[en::kSlots + en::kParts]);
+  en::close(slots, slots + en::kSlots);
 }
 
 void FixTDEMWallGran::energy_sums(double *parts, double *work, double **peratom, int wall_column) const

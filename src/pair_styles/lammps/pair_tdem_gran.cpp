@@ -19,6 +19,7 @@
 #include "fix_tdem_energy_store.h"
 
 #include "contact/energy.h"
+#include "tdem_lammps_energy.h"
 
 #include "atom.h"
 #include "comm.h"
@@ -448,12 +449,8 @@ __attribute__((flatten, noinline)) void PairTDEMGran::eval(int /*eflag*/, int /*
         // energy: the loads of this step in their parts; the step's work from the last step's
         // loads over the pair's motion (the half-step velocities of the drift); at set-up the
         // loads only (the integrator's first kick uses them)
-        tdem::energy::Compact<double> now;
-        now.n[0] = delx * rinv, now.n[1] = dely * rinv, now.n[2] = delz * rinv;
-        now.fe = nres.elastic;
-        now.fd = ccel * r - nres.elastic;
-        now.ci = radi, now.cj = radj;
-        for (int k = 0; k < 3; k++) now.ft[k] = fs[k], now.tr[k] = lawij.roll ? troll[k] : 0.0;
+        const tdem::energy::Compact<double> now = tdem_lammps::contact_loads(
+            delx, dely, delz, rinv, ccel * r, nres.elastic, fs, radi, radj, lawij.roll ? troll : nullptr);
         double *es = shear + hsize - tdem::energy::kSlots;
         if (shearupdate)
           tdem::energy::step(es, now, tdem::energy::pair_motion(v[i], v[j], omega[i], omega[j], dt));

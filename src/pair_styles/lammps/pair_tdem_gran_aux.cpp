@@ -81,14 +81,14 @@ void PairTDEMGran::energy_end(int i, int j, double *slots, bool update)
     double **v = atom->v, **omega = atom->omega;
     en::step(slots, en::Compact<double>{}, en::pair_motion(v[i], v[j], omega[i], omega[j], dt));
   }
+  double taken[en::kParts] = {};
+  en::close(slots, taken);
   double *ri = estore->row(i), *rj = estore->row(j);
   const bool to_j = force->newton_pair || j < atom->nlocal;
   for (int p = 0; p < en::kParts; p++) {
-    const double half = -0.5 * slots[en::kCompactSize + p];
-    ri[p] += half;
-    if (to_j) rj[p] += half;
+    ri[p] += 0.5 * taken[p];
+    if (to_j) rj[p] += 0.5 * taken[p];
   }
-  for (int m = 0; m < en::kSlots; m++) slots[m] = 0.0;
 }
 
 void PairTDEMGran::energy_sums(double *sums, double **peratom)

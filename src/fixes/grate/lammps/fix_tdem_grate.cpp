@@ -333,23 +333,15 @@ __attribute__((flatten, noinline)) void FixTDEMGrate::eval()
         // own motion (as fix tdem/wall/gran energy yes); at set-up the loads only
         namespace en = tdem::energy;
         double *es = shear + law_history;
-        en::Compact<double> now;
-        now.n[0] = dx * rinv, now.n[1] = dy * rinv, now.n[2] = dz * rinv;
-        now.fe = nres.elastic;
-        now.fd = ccel * r - nres.elastic;
-        now.ci = rad;
-        for (int k = 0; k < 3; k++) now.ft[k] = fs[k];
+        const en::Compact<double> now =
+            tdem_lammps::contact_loads(dx, dy, dz, rinv, ccel * r, nres.elastic, fs, rad, 0.0, nullptr);
         const double vb[3] = {bx.velocity.x, bx.velocity.y, bx.velocity.z};
-        if (history_update) {
-          double fsum = 0.0;
-          for (int k = 0; k < 3; k++)
-            fsum += ((es[3] + es[4]) * es[k] + es[5 + k] + (now.fe + now.fd) * now.n[k] + now.ft[k]) * vb[k];
-          sl[max_contacts * slot_size + en::kParts] += 0.5 * fsum * dt;
-          static const double rest[3] = {0.0, 0.0, 0.0};
-          en::step(es, now, en::pair_motion(v[i], vb, omg[i], rest, dt));
-        } else {
+        static const double rest[3] = {0.0, 0.0, 0.0};
+        if (history_update)
+          en::wall_step(es, now, en::pair_motion(v[i], vb, omg[i], rest, dt), vb, dt,
+                        sl[max_contacts * slot_size + en::kParts]);
+        else
           en::save(now, es);
-        }
       }
       double fw[3];
       tdem_lammps::add_wall_force(f[i], torque[i], dx, dy, dz, ccel, fs, rinv, rad, fw);
@@ -371,13 +363,11 @@ void FixTDEMGrate::energy_free(int i, double *slot, bool advance)
   if (advance && (es[0] != 0.0 || es[1] != 0.0 || es[2] != 0.0)) {
     const tdem::grate::Box &bx = boxes_[static_cast<int>(slot[0])];
     const double vb[3] = {bx.velocity.x, bx.velocity.y, bx.velocity.z};
-    double fsum = 0.0;
-    for (int k = 0; k < 3; k++) fsum += ((es[3] + es[4]) * es[k] + es[5 + k]) * vb[k];
-    tail[en::kParts] += 0.5 * fsum * update->dt;
     static const double rest[3] = {0.0, 0.0, 0.0};
-    en::step(es, en::Compact<double>{}, en::pair_motion(atom->v[i], vb, atom->omega[i], rest, update->dt));
+    en::wall_step(es, en::Compact<double>{}, en::pair_motion(atom->v[i], vb, atom->omega[i], rest, update->dt), vb,
+                  update->dt, tail[en::kParts]);
   }
-  for (int p = 0; p < en::kParts; p++) tail[p] -= es[en::kCompactSize + p];
+  en::close(es, tail);
 }
 
 void FixTDEMGrate::energy_sums(double *parts, double *work, double **peratom, int wall_column) const
